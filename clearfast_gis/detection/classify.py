@@ -1,0 +1,128 @@
+"""Class cue and confidence of an anomaly from size, shape, temporal behaviour and diffusivity.
+
+Rules (documented in docs/detection.md):
+
+1. clutter when any clutter cue holds: circularity < 0.5 (irregular outline); summary polarity
+   'mixed' over several supporting scans (inconsistent thermal behaviour); a characterised
+   diffusivity like stone or metal (``clearfast_gis.thermal.cue.material_cue`` says stone or metal).
+2. otherwise, by the equivalent diameter: at_mine for 0.25-0.45 m (e.g. M6A2, 33.7 cm), ap_mine
+   for 0.06-0.16 m (e.g. M2A4, 10.4 cm); unknown outside both ranges or without a metric size.
+
+The confidence (0-1) is the product of a detection term ``1 - exp(-score / 3)``, a shape term
+(circularity), a temporal term (1.0 for 'warm_day_cool_night', 0.8 for 'warm'/'cool', 0.5 for
+'mixed'/'none'; 0.8 when N = 1) and a diffusivity term (1.0 when a characterised diffusivity
+is mine-like, alpha <= 4e-7 m2/s; 0.7 for soil-like 4e-7 to 1e-6; 0.4 for stone/metal; 0.8
+without a characterised inversion). For the clutter class the same product is the confidence
+that the anomaly is *not* a mine: ``1 - product``.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping
+
+from clearfast_gis.detection.features import AnomalyFeatures
+
+__all__ = ["AT_DIAMETER_M", "AP_DIAMETER_M", "CLASSES", "classify", "diffusivity_cue"]
+
+CLASSES = ("at_mine", "ap_mine", "clutter", "unknown")
+AT_DIAMETER_M = (0.25, 0.45)
+AP_DIAMETER_M = (0.06, 0.16)
+MINE_ALPHA_MAX = 4e-7
+STONE_ALPHA_MIN = 1e-6
+
+
+def diffusivity_cue(alpha_m2s: float) -> str:
+    """'mine' (explosive/plastic, alpha <= 4e-7 m2/s), 'soil' or 'stone_metal' (>= 1e-6)."""
+    if alpha_m2s <= MINE_ALPHA_MAX:
+        return "mine"
+    if alpha_m2s < STONE_ALPHA_MIN:
+        return "soil"
+    return "stone_metal"
+
+
+def _inversion_alpha(inversion) -> float | None:
+    """The characterised diffusivity of an inversion result (object or mapping), else None.
+
+    Accepted fields: ``diffusivity_m2s`` (or ``alpha_m2s``) and an optional ``characterised``
+    flag (False means the fit did not determine the parameters).
+    """
+    if inversion is None:
+        return None
+
+    def get(name):
+        if isinstance(inversion, Mapping):
+            return inversion.get(name)
+        return getattr(inversion, name, None)
+
+    if get("characterised") is False:
+        return None
+    alpha = get("diffusivity_m2s")
+    if alpha is None:
+        alpha = get("alpha_m2s")
+    if alpha is None or not math.isfinite(float(alpha)) or float(alpha) <= 0:
+        return None
+    return float(alpha)
+
+
+_CUE_CLASS = {"explosive": "mine", "soil": "soil", "stone": "stone_metal", "metal": "stone_metal"}
+
+
+def _material(alpha: float, inversion) -> str:
+    """Material cue of a diffusivity: ``clearfast_gis.thermal.cue.material_cue`` (with the
+    inversion's ``diffusivity_sigma_m2s`` when given) mapped to mine / soil / stone_metal;
+    the thresholds of :func:`diffusivity_cue` when the thermal package is not available."""
+    try:
+        from clearfast_gis.thermal.cue import material_cue
+    except ImportError:
+        return diffusivity_cue(alpha)
+    if isinstance(inversion, Mapping):
+        sigma = inversion.get("diffusivity_sigma_m2s")
+    else:
+        sigma = getattr(inversion, "diffusivity_sigma_m2s", None)
+    best = material_cue(alpha, float("nan") if sigma is None else float(sigma))["best"]
+    return _CUE_CLASS.get(best, diffusivity_cue(alpha))
+
+
+def classify(features: AnomalyFeatures, inversion=None) -> tuple[str, float]:
+    """Class cue and confidence of one anomaly.
+
+    Parameters
+    ----------
+    features : AnomalyFeatures
+        From :func:`clearfast_gis.detection.blob_features` (needs ``diameter_m`` for the mine
+        classes).
+    inversion : mapping or object, optional
+        Thermal inversion of the anomaly with ``diffusivity_m2s`` (m2/s) and optionally
+        ``characterised`` (bool).
+
+    Returns
+    -------
+    (class_cue, confidence) : (str, float)
+        class_cue in ``CLASSES``; confidence in [0, 1].
+    """
+    alpha = _inversion_alpha(inversion)
+    material = None if alpha is None else _material(alpha, inversion)
+    n_total = len(features.polarity_per_scan)
+    irregular = features.circularity < 0.5
+    inconsistent = features.polarity == "mixed" and features.n_scans >= 3
+    hard = material == "stone_metal"
+
+    detect_term = 1.0 - math.exp(-max(features.score, 0.0) / 3.0)
+    shape_term = max(0.0, min(1.0, features.circularity))
+    if n_total <= 1:
+        time_term = 0.8
+    else:
+        time_term = {"warm_day_cool_night": 1.0, "warm": 0.8, "cool": 0.8}.get(
+            features.polarity, 0.5)
+    diff_term = {"mine": 1.0, "soil": 0.7, "stone_metal": 0.4, None: 0.8}[material]
+    product = detect_term * shape_term * time_term * diff_term
+
+    if irregular or inconsistent or hard:
+        return "clutter", round(1.0 - product, 4)
+    d = features.diameter_m
+    if math.isfinite(d) and AT_DIAMETER_M[0] <= d <= AT_DIAMETER_M[1]:
+        return "at_mine", round(product, 4)
+    if math.isfinite(d) and AP_DIAMETER_M[0] <= d <= AP_DIAMETER_M[1]:
+        return "ap_mine", round(product, 4)
+    return "unknown", round(product, 4)

@@ -1,0 +1,153 @@
+"""GeoPackage products with default QGIS styles embedded in the ``layer_styles`` table.
+
+Layers are written with pyogrio (GeoPackage 1.2, readable by every GDAL in the field); the
+``layer_styles`` table is then added with sqlite3 using the exact table definition QGIS itself
+creates, so QGIS applies the styles when it opens the layers. The whole file is written under a
+temporary name and renamed at the end.
+"""
+
+from __future__ import annotations
+
+import os
+import re
+import sqlite3
+from collections.abc import Mapping
+from pathlib import Path
+
+from clearfast_gis.atomic import atomic_path
+from clearfast_gis.errors import InvalidInput
+
+GPKG_VERSION = "1.2"
+"""GeoPackage version written (QGIS 3.22 with GDAL 3.6 reads it without warnings)."""
+
+GEOMETRY_COLUMN = "geom"
+
+_LAYER_STYLES_DDL = (
+    'CREATE TABLE IF NOT EXISTS "layer_styles" ( '
+    '"id" INTEGER PRIMARY KEY AUTOINCREMENT NOT NULL, "f_table_catalog" TEXT(256), '
+    '"f_table_schema" TEXT(256), "f_table_name" TEXT(256), "f_geometry_column" TEXT(256), '
+    '"styleName" TEXT(30), "styleQML" TEXT, "styleSLD" TEXT, "useAsDefault" BOOLEAN, '
+    '"description" TEXT, "owner" TEXT(30), "ui" TEXT(30), '
+    "\"update_time\" DATETIME DEFAULT (strftime('%Y-%m-%dT%H:%M:%fZ','now')))"
+)
+
+_LAYER_NAME = re.compile(r"^[a-z][a-z0-9_]*$")
+
+
+def write_geopackage(
+    path: str | os.PathLike,
+    layers: Mapping[str, object],
+    styles: Mapping[str, str] | None = None,
+    style_name: str = "default",
+) -> str:
+    """Write GeoDataFrames as layers of one GeoPackage, with default styles, atomically.
+
+    Parameters
+    ----------
+    path : path
+        Output ``.gpkg``; replaced if it exists.
+    layers : mapping of str to geopandas.GeoDataFrame
+        Layer name (lower-case snake_case) -> features. Each frame needs a CRS. Layers are
+        written in the mapping's order; every layer gets an integer ``fid`` primary key.
+    styles : mapping of str to str, optional
+        Layer name -> QML text stored as that layer's default style in ``layer_styles``.
+    style_name : str
+        ``styleName`` of the stored styles.
+
+    Returns
+    -------
+    str
+        The final path.
+    """
+    import pyogrio
+
+    styles = dict(styles or {})
+    if not layers:
+        raise InvalidInput("no layers to write", path)
+    for name, frame in layers.items():
+        if not _LAYER_NAME.match(name):
+            raise InvalidInput("layer names must be lower-case snake_case", path, name)
+        if getattr(frame, "crs", None) is None:
+            raise InvalidInput("the layer has no CRS", path, name)
+    unknown = sorted(set(styles) - set(layers))
+    if unknown:
+        raise InvalidInput("style for a layer that is not written", path, unknown[0])
+    with atomic_path(path) as tmp:
+        # GDAL wants the .gpkg extension: build beside the temporary name, then move onto it
+        work = tmp.with_name(tmp.name + ".gpkg")
+        try:
+            for name, frame in layers.items():
+                pyogrio.write_dataframe(
+                    frame, work, layer=name, driver="GPKG", append=work.exists(),
+                    geometry_type=_geometry_type(frame), promote_to_multi=False,
+                    dataset_options={"VERSION": GPKG_VERSION}, layer_options={"FID": "fid"},
+                )
+            if styles:
+                add_layer_styles(work, styles, style_name=style_name)
+            os.replace(work, tmp)
+        finally:
+            if work.exists():
+                work.unlink()
+    return os.fspath(path)
+
+
+def _geometry_type(frame) -> str | None:
+    types = sorted({t for t in frame.geometry.geom_type.dropna().unique()})
+    if len(types) == 1:
+        return types[0]
+    if not types:
+        return "Unknown"
+    return None
+
+
+def add_layer_styles(path: str | os.PathLike, styles: Mapping[str, str],
+                     style_name: str = "default") -> None:
+    """Store QML styles as the default styles of layers of an existing GeoPackage.
+
+    Creates the ``layer_styles`` table (QGIS's definition) and registers it in
+    ``gpkg_contents`` as an attributes table when missing; replaces earlier default styles of
+    the same layers.
+    """
+    with sqlite3.connect(os.fspath(path)) as con:
+        con.execute(_LAYER_STYLES_DDL)
+        registered = con.execute(
+            "SELECT 1 FROM gpkg_contents WHERE table_name = 'layer_styles'").fetchone()
+        if registered is None:
+            con.execute(
+                "INSERT INTO gpkg_contents (table_name, data_type, identifier, description, "
+                "last_change, srs_id) VALUES ('layer_styles', 'attributes', 'layer_styles', '', "
+                "strftime('%Y-%m-%dT%H:%M:%fZ','now'), 0)")
+        for layer, qml in styles.items():
+            row = con.execute(
+                "SELECT column_name FROM gpkg_geometry_columns WHERE table_name = ?",
+                (layer,)).fetchone()
+            geometry_column = row[0] if row else ""
+            con.execute("UPDATE layer_styles SET useAsDefault = 0 WHERE f_table_name = ?",
+                        (layer,))
+            con.execute(
+                "INSERT INTO layer_styles (f_table_catalog, f_table_schema, f_table_name, "
+                "f_geometry_column, styleName, styleQML, styleSLD, useAsDefault, description, "
+                "owner, ui) VALUES ('', '', ?, ?, ?, ?, '', 1, ?, '', NULL)",
+                (layer, geometry_column, style_name, qml,
+                 f"clearfast default style of {layer}"))
+    # sqlite3's context manager commits but does not close
+    con.close()
+
+
+def read_layer_styles(path: str | os.PathLike) -> dict[str, str]:
+    """Default styles stored in a GeoPackage: layer name -> QML text (empty if none)."""
+    if not Path(path).is_file():
+        raise InvalidInput("no such GeoPackage", path)
+    con = sqlite3.connect(f"file:{os.fspath(path)}?mode=ro", uri=True)
+    try:
+        has = con.execute(
+            "SELECT 1 FROM sqlite_master WHERE type = 'table' AND name = 'layer_styles'"
+        ).fetchone()
+        if has is None:
+            return {}
+        rows = con.execute(
+            "SELECT f_table_name, styleQML FROM layer_styles WHERE useAsDefault = 1 "
+            "ORDER BY update_time, id").fetchall()
+    finally:
+        con.close()
+    return {name: qml for name, qml in rows}

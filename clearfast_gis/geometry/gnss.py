@@ -1,0 +1,241 @@
+"""RTK-DGPS fixes to world positions: UTM zone, WGS84 <-> survey CRS, the platform track.
+
+The track interpolates the antenna position linearly in time between usable fixes (GGA fix
+quality > 0), keeps the fix quality of every epoch (4 = RTK fixed; anything else is degraded)
+and refuses frame times that are too far from any usable fix.
+"""
+
+from __future__ import annotations
+
+import functools
+from dataclasses import dataclass
+from typing import Protocol
+
+import numpy as np
+from pyproj import CRS, Transformer
+
+from clearfast_gis.errors import InvalidInput
+from clearfast_gis.timeutil import format_utc
+
+#: GGA fix quality of an RTK fixed solution (anything else is degraded)
+RTK_FIXED = 4
+
+
+def _utm_zone_scalar(lat: float, lon: float) -> int:
+    lon = ((lon + 180.0) % 360.0) - 180.0
+    zone = int(np.floor((lon + 180.0) / 6.0)) % 60 + 1
+    if 56.0 <= lat < 64.0 and 3.0 <= lon < 12.0:
+        zone = 32  # south-west Norway
+    elif 72.0 <= lat < 84.0 and 0.0 <= lon < 42.0:
+        zone = (31, 33, 35, 37)[min(3, int((lon + 3.0) // 12.0))]  # Svalbard
+    return zone
+
+
+def utm_epsg_for(lat_deg: float, lon_deg: float) -> int:
+    """EPSG code of the WGS84 UTM zone containing a point (326zz north, 327zz south).
+
+    Follows the standard zone rules including the Norway (32V) and Svalbard (31X-37X)
+    exceptions.
+
+    Parameters
+    ----------
+    lat_deg, lon_deg : float
+        WGS84 latitude in [-80, 84] and longitude in degrees.
+    """
+    lat, lon = float(lat_deg), float(lon_deg)
+    if not (np.isfinite(lat) and np.isfinite(lon)) or not -80.0 <= lat <= 84.0:
+        raise ValueError(f"no UTM zone for latitude {lat_deg}, longitude {lon_deg}")
+    zone = _utm_zone_scalar(lat, lon)
+    return (32600 if lat >= 0.0 else 32700) + zone
+
+
+@functools.lru_cache(maxsize=32)
+def _transformer(src: int, dst: int) -> Transformer:
+    return Transformer.from_crs(CRS.from_epsg(src), CRS.from_epsg(dst), always_xy=True)
+
+
+def lonlat_to_crs(lon_deg: np.ndarray, lat_deg: np.ndarray,
+                  epsg: int) -> tuple[np.ndarray, np.ndarray]:
+    """WGS84 longitude/latitude (degrees) to (x, y) metres in EPSG ``epsg``."""
+    x, y = _transformer(4326, int(epsg)).transform(np.asarray(lon_deg, dtype=float),
+                                                    np.asarray(lat_deg, dtype=float))
+    return np.asarray(x), np.asarray(y)
+
+
+def crs_to_lonlat(x: np.ndarray, y: np.ndarray, epsg: int) -> tuple[np.ndarray, np.ndarray]:
+    """(x, y) metres in EPSG ``epsg`` to WGS84 longitude/latitude (degrees)."""
+    lon, lat = _transformer(int(epsg), 4326).transform(np.asarray(x, dtype=float),
+                                                       np.asarray(y, dtype=float))
+    return np.asarray(lon), np.asarray(lat)
+
+
+class GnssArrays(Protocol):
+    """What :func:`platform_track` reads from a GNSS log (``clearfast_gis.survey.GnssLog``)."""
+
+    time_s: np.ndarray
+    lat_deg: np.ndarray
+    lon_deg: np.ndarray
+    alt_m: np.ndarray
+    fix_quality: np.ndarray
+
+
+@dataclass(frozen=True)
+class PlatformTrack:
+    """The GNSS antenna's world position over time.
+
+    Attributes
+    ----------
+    time_s : float64 (N,)
+        Epoch times of every GGA epoch, sorted (UTC epoch seconds).
+    fix_quality : int (N,)
+        GGA fix quality of every epoch.
+    usable : bool (N,)
+        Epochs with a fix (quality > 0 and finite coordinates); only these are interpolated.
+    position_m : float64 (N, 3)
+        (E, N, z above ground) of every epoch, NaN where not usable.
+    epsg : int
+        CRS of E and N.
+    max_gap_s : float
+        A time farther than this from every usable fix has no position.
+    source : str
+        Name of the log in error messages.
+    """
+
+    time_s: np.ndarray
+    fix_quality: np.ndarray
+    usable: np.ndarray
+    position_m: np.ndarray
+    epsg: int
+    max_gap_s: float = 5.0
+    source: str = "gnss.nmea"
+
+    @property
+    def usable_time_s(self) -> np.ndarray:
+        """Times of the usable epochs, shape (M,)."""
+        return self.time_s[self.usable]
+
+    def distance_to_fix_s(self, time_s: np.ndarray) -> np.ndarray:
+        """Seconds from each time to the nearest usable fix (inf if there is none)."""
+        t = np.atleast_1d(np.asarray(time_s, dtype=float))
+        tu = self.usable_time_s
+        if tu.size == 0:
+            return np.full(t.shape, np.inf)
+        i = np.clip(np.searchsorted(tu, t), 1, max(tu.size - 1, 1))
+        left = np.abs(t - tu[i - 1])
+        right = np.abs(tu[np.minimum(i, tu.size - 1)] - t)
+        return np.minimum(left, right)
+
+    def covered(self, time_s: np.ndarray) -> np.ndarray:
+        """True where a time is within ``max_gap_s`` of a usable fix."""
+        return self.distance_to_fix_s(time_s) <= self.max_gap_s
+
+    def gaps(self, min_gap_s: float | None = None) -> list[tuple[float, float]]:
+        """Intervals (start_s, end_s) between consecutive usable fixes longer than
+        ``min_gap_s`` (default ``max_gap_s``)."""
+        limit = self.max_gap_s if min_gap_s is None else float(min_gap_s)
+        tu = self.usable_time_s
+        if tu.size < 2:
+            return []
+        dt = np.diff(tu)
+        return [(float(tu[i]), float(tu[i + 1])) for i in np.flatnonzero(dt > limit)]
+
+    def at(self, time_s: np.ndarray, strict: bool = True) -> np.ndarray:
+        """Antenna world positions (N, 3) at ``time_s``, linear in time between usable fixes.
+
+        Times up to ``max_gap_s`` before the first or after the last usable fix take that
+        fix's position.
+
+        Parameters
+        ----------
+        time_s : array_like (N,)
+            UTC epoch seconds.
+        strict : bool
+            Raise :class:`InvalidInput` when a time is farther than ``max_gap_s`` from every
+            usable fix; otherwise return NaN rows there.
+        """
+        t = np.atleast_1d(np.asarray(time_s, dtype=float))
+        ok = self.covered(t)
+        if strict and not np.all(ok):
+            bad = t[~ok][0]
+            when = format_utc(float(bad)) if np.isfinite(bad) else str(bad)
+            raise InvalidInput(
+                f"{int(np.count_nonzero(~ok))} time(s) farther than {self.max_gap_s:g} s from "
+                f"any usable fix, first {when}", self.source, "fix_quality")
+        tu = self.usable_time_s
+        out = np.full((t.size, 3), np.nan)
+        if tu.size == 0:
+            return out
+        pos = self.position_m[self.usable]
+        for k in range(3):
+            out[:, k] = np.interp(t, tu, pos[:, k])
+        out[~ok] = np.nan
+        return out
+
+    def fix_quality_at(self, time_s: np.ndarray) -> np.ndarray:
+        """GGA fix quality of the epoch nearest each time (int, shape (N,))."""
+        t = np.atleast_1d(np.asarray(time_s, dtype=float))
+        i = np.clip(np.searchsorted(self.time_s, t), 1, max(self.time_s.size - 1, 1))
+        left = np.abs(t - self.time_s[i - 1])
+        right = np.abs(self.time_s[np.minimum(i, self.time_s.size - 1)] - t)
+        idx = np.where(right < left, np.minimum(i, self.time_s.size - 1), i - 1)
+        return self.fix_quality[idx].astype(int)
+
+    def degraded_at(self, time_s: np.ndarray) -> np.ndarray:
+        """True where the nearest epoch is not an RTK fixed solution."""
+        return self.fix_quality_at(time_s) != RTK_FIXED
+
+
+def platform_track(gnss_log: GnssArrays, epsg: int, ground_altitude_m: float,
+                   max_gap_s: float = 5.0, source: str = "gnss.nmea") -> PlatformTrack:
+    """The antenna track in the world frame from a GNSS log.
+
+    Parameters
+    ----------
+    gnss_log : GnssLog
+        Arrays ``time_s, lat_deg, lon_deg, alt_m, fix_quality`` (N,).
+    epsg : int
+        Survey CRS (projected, metres).
+    ground_altitude_m : float
+        Altitude of the ground plane on the GGA datum (MSL), metres; z = alt - ground.
+    max_gap_s : float
+        Largest distance in time to a usable fix for which a position is given.
+    source : str
+        Name of the log in error messages.
+
+    Raises
+    ------
+    InvalidInput
+        When the log has no epoch or no usable fix.
+    """
+    t = np.asarray(gnss_log.time_s, dtype=float).reshape(-1)
+    n = t.size
+    arrays = {}
+    for name in ("lat_deg", "lon_deg", "alt_m", "fix_quality"):
+        a = np.asarray(getattr(gnss_log, name)).reshape(-1)
+        if a.size != n:
+            raise InvalidInput(f"{name} has {a.size} values for {n} epochs", source, name)
+        arrays[name] = a
+    if n == 0:
+        raise InvalidInput("no GGA epoch", source)
+    order = np.argsort(t, kind="stable")
+    t = t[order]
+    lat = arrays["lat_deg"][order].astype(float)
+    lon = arrays["lon_deg"][order].astype(float)
+    alt = arrays["alt_m"][order].astype(float)
+    quality = arrays["fix_quality"][order].astype(int)
+    usable = (quality > 0) & np.isfinite(lat) & np.isfinite(lon) & np.isfinite(alt) \
+        & np.isfinite(t)
+    if not np.any(usable):
+        raise InvalidInput("no usable fix (every epoch has fix quality 0)", source,
+                           "fix_quality")
+    # keep one epoch per time (a repeated timestamp would break interpolation)
+    dup = np.zeros(n, dtype=bool)
+    tu_idx = np.flatnonzero(usable)
+    dup[tu_idx[1:][np.diff(t[tu_idx]) <= 0.0]] = True
+    usable &= ~dup
+    pos = np.full((n, 3), np.nan)
+    x, y = lonlat_to_crs(lon[usable], lat[usable], epsg)
+    pos[usable, 0] = x
+    pos[usable, 1] = y
+    pos[usable, 2] = alt[usable] - float(ground_altitude_m)
+    return PlatformTrack(t, quality, usable, pos, int(epsg), float(max_gap_s), source)

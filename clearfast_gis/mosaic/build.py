@@ -1,0 +1,141 @@
+"""One mosaic per scan: project, co-register and insert frames in scan-pattern order."""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Iterable
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from clearfast_gis.geometry.grid import GroundGrid
+from clearfast_gis.geometry.pose import CameraPose
+from clearfast_gis.mosaic.coregister import FrameCorrection, coregister_projected
+from clearfast_gis.mosaic.insert import MosaicCanvas
+from clearfast_gis.mosaic.project import project_frame
+from clearfast_gis.mosaic.seams import fit_linear_histogram_mapping
+from clearfast_gis.progress import NULL_PROGRESS, Progress
+from clearfast_gis.registration import ConformalTransform
+
+
+@dataclass
+class FrameInput:
+    """One frame ready for the mosaic.
+
+    Attributes
+    ----------
+    index : int
+        Position index in the scan pattern (the source id in the mosaic).
+    values : float32 (B, H, W)
+        Apparent temperature per band, degrees C.
+    pose : CameraPose
+        Geometric pose (RTK-DGPS, pan/tilt, mount).
+    """
+
+    index: int
+    values: np.ndarray
+    pose: CameraPose
+
+
+@dataclass
+class ScanMosaic:
+    """A scan's mosaic and how it was made.
+
+    Attributes
+    ----------
+    values : float32 (B, H, W)
+        Degrees C, NaN where no frame saw the ground.
+    source : int32 (H, W)
+        Position index of the source frame per cell, -1 where empty.
+    corrections : dict[int, FrameCorrection]
+        Registration correction per position index.
+    seam_gains : dict[int, tuple[float, float]]
+        Seam-balancing (a, b) per position when that option is on.
+    """
+
+    values: np.ndarray
+    source: np.ndarray
+    corrections: dict[int, FrameCorrection] = field(default_factory=dict)
+    seam_gains: dict[int, tuple[float, float]] = field(default_factory=dict)
+
+    @property
+    def footprint_mask(self) -> np.ndarray:
+        """Cells with data, bool (H, W)."""
+        return self.source >= 0
+
+
+def correction_as_transform(corr: FrameCorrection, pixel_size_m: float) -> ConformalTransform:
+    """A recorded ground correction as a window transform (the start of the next scan's)."""
+    return ConformalTransform(angle_rad=-math.radians(corr.angle_deg),
+                              tx_px=-corr.dx_m / pixel_size_m, ty_px=corr.dy_m / pixel_size_m)
+
+
+def build_scan_mosaic(frames: Iterable[FrameInput], camera, grid: GroundGrid, n_bands: int,
+                      coregister: bool = True, reference: np.ndarray | None = None,
+                      predicted: dict[int, FrameCorrection] | None = None,
+                      max_shift_m: float = 0.25, max_angle_deg: float = 1.5,
+                      seam_balance: bool = False, progress: Progress = NULL_PROGRESS,
+                      ) -> ScanMosaic:
+    """Mosaic one scan (paper §5: back-project, co-register, insert, optionally balance).
+
+    Parameters
+    ----------
+    frames : iterable of FrameInput
+        In scan-pattern order.
+    camera : EquiangularCamera or PinholeCamera
+    grid : GroundGrid
+        The survey's mosaic grid (shared by every scan).
+    n_bands : int
+        Spectral bands per frame.
+    coregister : bool
+        Correct each frame's placement by mutual information (paper §5.2).
+    reference : float32 (B, H, W), optional
+        The reference scan's mosaic. When given, frames are registered to it (temporal
+        co-registration frame by frame, which also follows a drifting platform); otherwise
+        to the mosaic built so far.
+    predicted : dict[int, FrameCorrection], optional
+        Corrections of the same positions in the previous scan, used as the starting point
+        (a slowly drifting platform moves the view a little from scan to scan).
+    max_shift_m, max_angle_deg : float
+        Bound of the correction around the prediction.
+    seam_balance : bool
+        Apply the paper's histogram-based linear mapping to each frame before insertion.
+    progress : Progress
+        Advanced once per frame.
+
+    Returns
+    -------
+    ScanMosaic
+    """
+    canvas = MosaicCanvas(n_bands, grid.height, grid.width)
+    corrections: dict[int, FrameCorrection] = {}
+    seam_gains: dict[int, tuple[float, float]] = {}
+    for frame in frames:
+        projected = project_frame(frame.values, camera, frame.pose, grid)
+        progress.advance()
+        if projected is None:
+            continue
+        if coregister:
+            rs, cs = projected.window.slices
+            ref = canvas.values[:, rs, cs] if reference is None else reference[:, rs, cs]
+            prev = None if predicted is None else predicted.get(frame.index)
+            init = None
+            if prev is not None and prev.applied:
+                init = correction_as_transform(prev, grid.pixel_size)
+            projected, corr, _ = coregister_projected(
+                projected, ref, grid.pixel_size, max_shift_m, max_angle_deg, init=init)
+            if not corr.applied and prev is not None and prev.applied and init is not None:
+                corr = FrameCorrection(prev.dx_m, prev.dy_m, prev.angle_deg, False,
+                                       f"{corr.reason}_kept_prediction", corr.metric)
+            corrections[frame.index] = corr
+        if seam_balance:
+            under = canvas.window_values(projected)
+            overlap = projected.valid & np.isfinite(under[0])
+            if overlap.any():
+                a, b = fit_linear_histogram_mapping(under[0][overlap],
+                                                    projected.values[0][overlap])
+                projected.values *= np.float32(a)
+                projected.values += np.float32(b)
+                seam_gains[frame.index] = (a, b)
+        canvas.insert(projected, frame.index)
+    return ScanMosaic(canvas.values, canvas.source, corrections, seam_gains)

@@ -1,0 +1,119 @@
+"""Ground projection of one frame onto a window of the mosaic grid (paper §5.1)."""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import cv2
+import numpy as np
+from shapely.geometry import Polygon
+
+from clearfast_gis.geometry.grid import GroundGrid
+from clearfast_gis.geometry.pose import CameraPose
+from clearfast_gis.geometry.projection import frame_footprint, ground_maps, incidence_angle_map
+
+
+@dataclass(frozen=True)
+class Window:
+    """A rectangular block of a grid: rows ``row0:row0+height``, cols ``col0:col0+width``."""
+
+    row0: int
+    col0: int
+    height: int
+    width: int
+
+    @property
+    def slices(self) -> tuple[slice, slice]:
+        """(row slice, column slice) into the full grid."""
+        return (slice(self.row0, self.row0 + self.height),
+                slice(self.col0, self.col0 + self.width))
+
+
+@dataclass
+class ProjectedFrame:
+    """A frame resampled onto a window of the mosaic grid.
+
+    Attributes
+    ----------
+    values : float32 (B, h, w)
+        Apparent temperature per band, degrees C; NaN where the frame does not see the cell.
+    incidence_deg : float32 (h, w)
+        Angle between the line of sight and the vertical (0 = nadir), degrees; NaN where
+        unseen. The mosaic keeps, per cell, the frame that saw it closest to nadir.
+    window : Window
+        Where the block lies in the mosaic grid.
+    """
+
+    values: np.ndarray
+    incidence_deg: np.ndarray
+    window: Window
+
+    @property
+    def valid(self) -> np.ndarray:
+        """Cells seen by the frame, bool (h, w)."""
+        return np.isfinite(self.incidence_deg)
+
+
+def footprint_window(footprint: Polygon, grid: GroundGrid, pad_px: int = 2) -> Window | None:
+    """The smallest window of ``grid`` that contains ``footprint`` (None if disjoint)."""
+    if footprint.is_empty:
+        return None
+    xmin, ymin, xmax, ymax = footprint.bounds
+    ps = grid.pixel_size
+    c0 = max(0, math.floor((xmin - grid.x0) / ps) - pad_px)
+    c1 = min(grid.width, math.ceil((xmax - grid.x0) / ps) + pad_px)
+    r0 = max(0, math.floor((grid.y0 - ymax) / ps) - pad_px)
+    r1 = min(grid.height, math.ceil((grid.y0 - ymin) / ps) + pad_px)
+    if c1 <= c0 or r1 <= r0:
+        return None
+    return Window(r0, c0, r1 - r0, c1 - c0)
+
+
+def subgrid(grid: GroundGrid, window: Window) -> GroundGrid:
+    """The grid of a window (same cell size and CRS)."""
+    ps = grid.pixel_size
+    return GroundGrid(grid.x0 + window.col0 * ps, grid.y0 - window.row0 * ps, ps,
+                      window.width, window.height, grid.epsg)
+
+
+def project_frame(frame: np.ndarray, camera, pose: CameraPose, grid: GroundGrid,
+                  max_incidence_deg: float = 85.0) -> ProjectedFrame | None:
+    """Resample a frame onto the part of ``grid`` it sees.
+
+    Parameters
+    ----------
+    frame : float32 (H, W) or (B, H, W)
+        Apparent temperature, degrees C (NaN = invalid pixel).
+    camera : EquiangularCamera or PinholeCamera
+    pose : CameraPose
+        Camera pose in the survey CRS (E, N, z above ground).
+    grid : GroundGrid
+        The mosaic grid.
+    max_incidence_deg : float
+        Cells seen at a more grazing angle are left out.
+
+    Returns
+    -------
+    ProjectedFrame or None
+        None when the frame sees no cell of the grid.
+    """
+    stack = frame[None] if frame.ndim == 2 else frame
+    window = footprint_window(frame_footprint(camera, pose), grid)
+    if window is None:
+        return None
+    sub = subgrid(grid, window)
+    map_x, map_y = ground_maps(camera, pose, sub)
+    seen = map_x >= 0
+    if not seen.any():
+        return None
+    values = np.empty((stack.shape[0], *sub.shape), dtype=np.float32)
+    for b in range(stack.shape[0]):
+        values[b] = cv2.remap(np.ascontiguousarray(stack[b], dtype=np.float32), map_x, map_y,
+                              interpolation=cv2.INTER_LINEAR, borderMode=cv2.BORDER_CONSTANT,
+                              borderValue=float("nan"))
+    incidence = incidence_angle_map(pose, sub)
+    keep = seen & (incidence <= max_incidence_deg) & np.all(np.isfinite(values), axis=0)
+    values[:, ~keep] = np.nan
+    incidence = np.where(keep, incidence, np.float32(np.nan)).astype(np.float32)
+    return ProjectedFrame(values, incidence, window)

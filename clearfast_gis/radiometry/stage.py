@@ -1,0 +1,275 @@
+"""The calibration stage on a survey folder: raw frames of a scan to apparent temperature.
+
+Thin glue between :mod:`clearfast_gis.survey` (blackbody frames and log, weather log, raw
+frames) and the pure functions of this package. Calibration is applied frame by frame at each
+frame's own time (nearest event, or gain and offset interpolated between the two bracketing
+events); air temperature, humidity and pressure are interpolated in the weather log at each
+frame's time.
+"""
+
+from __future__ import annotations
+
+import functools
+from collections.abc import Sequence
+from dataclasses import dataclass
+from typing import TYPE_CHECKING
+
+import numpy as np
+from numpy.typing import ArrayLike
+
+from clearfast_gis.errors import InvalidInput
+from clearfast_gis.progress import NULL_PROGRESS, Progress
+from clearfast_gis.radiometry.apparent import raw_to_apparent
+from clearfast_gis.radiometry.atmosphere import LW_WINDOW_UM, atmospheric_transmittance
+from clearfast_gis.radiometry.calibration import (
+    DEFAULT_MIN_CONTRAST_COUNTS,
+    CalibrationEvent,
+    GainOffset,
+    blackbody_temperature_at,
+    blend_gain_offsets,
+    select_events,
+)
+from clearfast_gis.radiometry.table import BandTable
+from clearfast_gis.units import c_to_k
+
+if TYPE_CHECKING:
+    from clearfast_gis.survey import Survey, WeatherLog
+
+DEFAULT_PATH_LENGTH_M = 20.0
+"""Camera-to-surface path length used when the geometry supplies none (paper section 3.5:
+"around 20 m"), metres."""
+
+DEFAULT_WEATHER_GAP_S = 900.0
+"""A frame farther than this from any valid weather record is an error, seconds."""
+
+
+@functools.lru_cache(maxsize=16)
+def band_table(lambda_min_um: float, lambda_max_um: float) -> BandTable:
+    """The :class:`BandTable` of a band, built once per process (200-400 K)."""
+    return BandTable(lambda_min_um, lambda_max_um)
+
+
+def has_transmittance_model(lambda_min_um: float, lambda_max_um: float) -> bool:
+    """Whether :func:`atmospheric_transmittance` covers the band (long-wave window)."""
+    return LW_WINDOW_UM[0] <= lambda_min_um < lambda_max_um <= LW_WINDOW_UM[1]
+
+
+def calibration_events(survey: Survey) -> list[CalibrationEvent]:
+    """All calibration events of a survey, every band.
+
+    Mean blackbody images come from ``blackbody/frames.csv``; each blackbody's temperature is
+    the blackbody log interpolated at the mean time of that blackbody's frames.
+
+    Parameters
+    ----------
+    survey : clearfast_gis.survey.Survey
+
+    Returns
+    -------
+    list of CalibrationEvent
+    """
+    from clearfast_gis.survey import read_blackbody_frames, read_blackbody_log
+
+    label = survey.label("blackbody_log")
+    log = read_blackbody_log(survey.path("blackbody_log"), label)
+    events = []
+    for e in read_blackbody_frames(survey):
+        t1 = blackbody_temperature_at(log.time_s, c_to_k(log.bb1_c), e.bb1_time_s, source=label)
+        t2 = blackbody_temperature_at(log.time_s, c_to_k(log.bb2_c), e.bb2_time_s, source=label)
+        events.append(CalibrationEvent(e.time_s, e.band, e.bb1_mean, e.bb2_mean, float(t1),
+                                       float(t2)))
+    return events
+
+
+@dataclass(frozen=True)
+class AirState:
+    """Air at the camera at given times: arrays of the query shape.
+
+    Attributes
+    ----------
+    t_air_k : float64
+        Air temperature, kelvin.
+    rh_pct : float64
+        Relative humidity, percent.
+    pressure_hpa : float64
+        Pressure, hPa.
+    """
+
+    t_air_k: np.ndarray
+    rh_pct: np.ndarray
+    pressure_hpa: np.ndarray
+
+
+def _interp_column(time_s: np.ndarray, values: np.ndarray, query: np.ndarray, name: str,
+                   max_gap_s: float, source: str | None) -> np.ndarray:
+    ok = np.isfinite(time_s) & np.isfinite(values)
+    if not ok.any():
+        raise InvalidInput("no valid records", source, name)
+    t, v = time_s[ok], values[ok]
+    gap = np.abs(query[:, None] - t[None, :]).min(axis=1) if query.size else query
+    if np.any(gap > max_gap_s):
+        raise InvalidInput(f"no record within {max_gap_s:g} s of a frame", source, name)
+    return np.interp(query, t, v)
+
+
+def weather_at(weather: WeatherLog, time_s: ArrayLike, max_gap_s: float = DEFAULT_WEATHER_GAP_S,
+               source: str | None = None) -> AirState:
+    """Air temperature, humidity and pressure at given times from a weather log.
+
+    Parameters
+    ----------
+    weather : clearfast_gis.survey.WeatherLog
+        1-minute records; NaN (logger ``NAN``) records are skipped per variable.
+    time_s : array_like (N,)
+        Query times, UTC epoch seconds.
+    max_gap_s : float
+        Largest allowed distance from a query to the nearest valid record, seconds.
+    source : str, optional
+        Log file name for error messages.
+
+    Returns
+    -------
+    AirState
+        Arrays of shape (N,).
+    """
+    q = np.atleast_1d(np.asarray(time_s, dtype=np.float64))
+    t = np.asarray(weather.time_s, dtype=np.float64)
+    return AirState(
+        c_to_k(_interp_column(t, np.asarray(weather.air_temp_c), q, "AirTC_Avg", max_gap_s,
+                              source)),
+        np.clip(_interp_column(t, np.asarray(weather.rh_pct), q, "RH_Avg", max_gap_s, source),
+                0.0, 100.0),
+        _interp_column(t, np.asarray(weather.pressure_hpa), q, "BP_hPa_Avg", max_gap_s, source),
+    )
+
+
+def apparent_temperature_frames(
+    raw: np.ndarray,
+    time_s: ArrayLike,
+    band: int,
+    table: BandTable,
+    events: Sequence[CalibrationEvent],
+    air: AirState,
+    path_length_m: ArrayLike | None = None,
+    mode: str = "interpolate",
+    min_contrast_counts: float = DEFAULT_MIN_CONTRAST_COUNTS,
+    atmosphere: bool = True,
+    progress: Progress = NULL_PROGRESS,
+) -> np.ndarray:
+    """Apparent temperature of a stack of frames, each calibrated at its own time.
+
+    Parameters
+    ----------
+    raw : ndarray (P, H, W)
+        Raw counts.
+    time_s : array_like (P,)
+        Frame times, UTC epoch seconds.
+    band : int
+        Band index (selects the events).
+    table : BandTable
+        The band.
+    events : sequence of CalibrationEvent
+        Calibration events (any bands).
+    air : AirState
+        Air state per frame, arrays (P,).
+    path_length_m : float, array_like (P,) or (P, H, W), optional
+        Path length per frame or per pixel, metres; default :data:`DEFAULT_PATH_LENGTH_M`.
+    mode : {"interpolate", "nearest"}
+        Event selection (see :func:`select_events`).
+    min_contrast_counts : float
+        Degenerate-pixel threshold, counts.
+    atmosphere : bool
+        Apply the atmospheric correction (Eq. 4); without it ``tau = 1``.
+    progress : Progress
+        Advanced once per frame.
+
+    Returns
+    -------
+    ndarray of float32 (P, H, W)
+        Apparent temperature, kelvin; NaN at uncalibrated pixels.
+    """
+    raw = np.asarray(raw)
+    if raw.ndim != 3:
+        raise InvalidInput(f"expected (P, H, W) frames, got shape {raw.shape}", field="raw")
+    n = raw.shape[0]
+    times = np.asarray(time_s, dtype=np.float64).reshape(n)
+    path = np.asarray(DEFAULT_PATH_LENGTH_M if path_length_m is None else path_length_m,
+                      dtype=np.float64)
+    if path.ndim == 1:
+        path = path.reshape(n, 1, 1)
+    if path.ndim == 3 and path.shape not in ((n, 1, 1), raw.shape):
+        raise InvalidInput(f"path length shape {path.shape} does not match frames {raw.shape}",
+                           field="path_length_m")
+    cache: dict[int, GainOffset] = {}
+    out = np.empty(raw.shape, dtype=np.float32)
+    for k in range(n):
+        parts = []
+        for ev, w in select_events(events, times[k], mode, band):
+            if id(ev) not in cache:
+                cache[id(ev)] = ev.gain_offset(table, min_contrast_counts)
+            parts.append((cache[id(ev)], w))
+        d = path[k] if path.ndim == 3 else path
+        if atmosphere:
+            tau = atmospheric_transmittance(d, air.t_air_k[k], air.rh_pct[k],
+                                            air.pressure_hpa[k], table.lambda_min_um,
+                                            table.lambda_max_um)
+        else:
+            tau = 1.0
+        out[k] = raw_to_apparent(raw[k], blend_gain_offsets(parts), tau, air.t_air_k[k], table)
+        progress.advance(1)
+    return out
+
+
+def apparent_temperature_scan(
+    survey: Survey,
+    scan: int,
+    band: int | str,
+    events: Sequence[CalibrationEvent],
+    weather: WeatherLog,
+    path_length_m: ArrayLike | None = None,
+    mode: str = "interpolate",
+    min_contrast_counts: float = DEFAULT_MIN_CONTRAST_COUNTS,
+    progress: Progress = NULL_PROGRESS,
+) -> np.ndarray:
+    """Apparent temperature of every frame of one scan and band (calibration stage).
+
+    Parameters
+    ----------
+    survey : clearfast_gis.survey.Survey
+        The survey folder.
+    scan : int
+        Scan number.
+    band : int or str
+        Band index or name.
+    events : sequence of CalibrationEvent
+        From :func:`calibration_events`.
+    weather : clearfast_gis.survey.WeatherLog
+        The weather log.
+    path_length_m : float, array_like (P,) or (P, H, W), optional
+        Camera-to-surface path (e.g. the geometry's per-pixel slant range), metres; default
+        :data:`DEFAULT_PATH_LENGTH_M`.
+    mode : {"interpolate", "nearest"}
+        Calibration event selection.
+    min_contrast_counts : float
+        Degenerate-pixel threshold, counts.
+    progress : Progress
+        Advanced once per frame (the caller starts the stage).
+
+    Returns
+    -------
+    ndarray of float32 (P, H, W)
+        Apparent temperature, kelvin, frames in :meth:`Survey.scan_positions` order; NaN at
+        uncalibrated pixels. Bands outside the long-wave window (no transmittance model) are
+        not corrected for the atmosphere.
+    """
+    b = survey.band_index(band)
+    info = survey.bands[b]
+    table = band_table(info.lambda_min_um, info.lambda_max_um)
+    rows = survey.scan_rows(scan, b)
+    raw = survey.read_scan(scan, b)
+    times = survey.frames.time_s[rows]
+    air = weather_at(weather, times, source=survey.label("weather"))
+    return apparent_temperature_frames(
+        raw, times, b, table, events, air, path_length_m, mode, min_contrast_counts,
+        atmosphere=has_transmittance_model(info.lambda_min_um, info.lambda_max_um),
+        progress=progress)

@@ -1,0 +1,92 @@
+"""Report figures (matplotlib, Agg backend): mosaics with detections, contrast curves."""
+
+from __future__ import annotations
+
+import io
+from collections.abc import Sequence
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+import numpy as np
+from affine import Affine
+
+from clearfast_gis.timeutil import format_utc
+
+
+def _png(fig) -> bytes:
+    buf = io.BytesIO()
+    fig.savefig(buf, format="png", dpi=110, bbox_inches="tight")
+    plt.close(fig)
+    return buf.getvalue()
+
+
+def _extent(transform: Affine, shape: tuple[int, int]) -> tuple[float, float, float, float]:
+    h, w = shape
+    x0, y0 = transform.c, transform.f
+    return (x0, x0 + w * transform.a, y0 + h * transform.e, y0)
+
+
+def mosaic_panel_png(mosaics: Sequence[np.ndarray], times_s: Sequence[float],
+                     transform: Affine, outlines: Sequence[np.ndarray],
+                     labels: Sequence[str], colours: Sequence[str], epsg: int) -> bytes:
+    """The paper's Fig. 7/8 layout: two mosaics (day, night) and the detections between them.
+
+    Parameters
+    ----------
+    mosaics : sequence of float32 (H, W)
+        Two mosaics, degrees C (NaN = no data).
+    times_s : sequence of float
+        Their scan times (UTC epoch seconds).
+    transform : Affine
+        Mosaic grid transform (survey CRS).
+    outlines : sequence of (K, 2) arrays
+        Anomaly outlines in map coordinates.
+    labels, colours : sequences of str
+        Label and colour per outline.
+    epsg : int
+        Survey CRS, for the axis labels.
+    """
+    fig, axes = plt.subplots(1, 3, figsize=(15, 5.2), sharex=True, sharey=True)
+    ext = _extent(transform, mosaics[0].shape)
+    for ax, m, t in ((axes[0], mosaics[0], times_s[0]), (axes[2], mosaics[1], times_s[1])):
+        finite = m[np.isfinite(m)]
+        lo, hi = (np.percentile(finite, [1, 99]) if finite.size else (0.0, 1.0))
+        im = ax.imshow(m, extent=ext, cmap="inferno", vmin=lo, vmax=hi, interpolation="nearest")
+        ax.set_title(f"Mosaic {format_utc(t, 'minutes')}")
+        fig.colorbar(im, ax=ax, shrink=0.8, label="apparent temperature (°C)")
+    base = mosaics[0]
+    axes[1].imshow(np.isfinite(base), extent=ext, cmap="Greys", vmin=0, vmax=3,
+                   interpolation="nearest")
+    for xy, lab, col in zip(outlines, labels, colours, strict=True):
+        for ax in axes:
+            ax.plot(xy[:, 0], xy[:, 1], color=col, lw=1.2)
+        axes[1].text(xy[:, 0].mean(), xy[:, 1].max(), lab, color=col, fontsize=8,
+                     ha="center", va="bottom")
+    axes[1].set_title("Detected anomalies")
+    for ax in axes:
+        ax.set_xlabel(f"easting (m, EPSG:{epsg})")
+        ax.ticklabel_format(useOffset=False, style="plain")
+        ax.tick_params(labelsize=7)
+    axes[0].set_ylabel(f"northing (m, EPSG:{epsg})")
+    return _png(fig)
+
+
+def contrast_curve_png(times_s: np.ndarray, contrast_k: np.ndarray,
+                       model_times_s: np.ndarray | None, model_k: np.ndarray | None,
+                       title: str) -> bytes:
+    """One anomaly's centre-minus-background contrast over the scans, with the model fit."""
+    fig, ax = plt.subplots(figsize=(5.2, 3.0))
+    t0 = float(times_s[0])
+    hours = (np.asarray(times_s) - t0) / 3600.0
+    ax.plot(hours, contrast_k, "o", ms=3.5, color="#c0392b", label="measured")
+    if model_times_s is not None and model_k is not None:
+        ax.plot((np.asarray(model_times_s) - t0) / 3600.0, model_k, "-", color="#2c3e50",
+                lw=1.2, label="thermal model")
+    ax.axhline(0.0, color="grey", lw=0.6)
+    ax.set_xlabel(f"hours after {format_utc(t0, 'minutes')}")
+    ax.set_ylabel("contrast (K)")
+    ax.set_title(title, fontsize=9)
+    ax.legend(fontsize=7)
+    return _png(fig)

@@ -1,0 +1,213 @@
+"""Burial depth and object diffusivity of one anomaly.
+
+theta = (d, log10 alpha): the best node of the site table (coarse grid), then bounded
+least squares (trust-region reflective) on the tensor-spline interpolant of the table,
+fitting the centre-minus-background contrast over all scans. Covariance from the
+Jacobian, scaled by the residual variance (floored at the noise variance when the noise is
+known).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+from numpy.typing import ArrayLike
+from scipy.optimize import least_squares
+
+from clearfast_gis.errors import InvalidInput
+from clearfast_gis.thermal.forcing import Forcing
+from clearfast_gis.thermal.materials import Soil
+from clearfast_gis.thermal.table import SiteTable, build_site_table, contrast_spline
+
+STATUSES = ("ok", "at_bound", "weak_contrast", "not_characterised")
+"""Possible :attr:`Inversion.status` values."""
+
+MAX_DEPTH_SIGMA_M = 0.02
+"""Depth uncertainty above which an estimate is not characterised, m."""
+
+MAX_LOG10_ALPHA_SIGMA = 0.5
+"""log10 diffusivity uncertainty above which an estimate is not characterised (x3)."""
+
+MIN_CONTRAST_SNR = 3.0
+"""Peak modelled contrast below this many noise sigmas is a weak contrast."""
+
+AMBIGUITY_DCHI2 = 4.0
+"""A second local optimum at another depth whose chi-square is within this of the best one
+makes the estimate ambiguous (not characterised)."""
+
+MAX_MISFIT_RATIO = 3.0
+"""Residual rms above this many noise sigmas: the cylinder model does not explain the data."""
+
+
+@dataclass(frozen=True)
+class Inversion:
+    """Result of :func:`invert_anomaly`.
+
+    Attributes
+    ----------
+    depth_m, depth_sigma_m : float
+        Depth of the object's top and its 1-sigma uncertainty, m.
+    alpha_m2s, alpha_sigma_m2s : float
+        Object diffusivity and its 1-sigma uncertainty, m2 s-1.
+    log10_alpha_sigma : float
+        Uncertainty of log10 alpha (the fit's own parameter).
+    status : str
+        ``ok``; ``at_bound`` (depth at the deepest node or diffusivity at either end of the
+        table); ``weak_contrast`` (peak modelled contrast < 3 noise sigma);
+        ``not_characterised`` (depth sigma > 2 cm, log10 alpha sigma > 0.5, a rival optimum
+        at another depth within delta chi-square 4, or the misfit > 3 noise sigma).
+    residual_rms_k : float
+        Root-mean-square misfit, K.
+    noise_k : float
+        Noise sigma of the contrast used (given or the residual rms), K.
+    peak_contrast_k : float
+        Largest |modelled contrast| over the scans, K.
+    correlation : float
+        Correlation of the depth and log10 alpha estimates.
+    model_contrast_k : ndarray, shape (S,)
+        Best-fit contrast at the scan times, K.
+    """
+
+    depth_m: float
+    depth_sigma_m: float
+    alpha_m2s: float
+    alpha_sigma_m2s: float
+    log10_alpha_sigma: float
+    status: str
+    residual_rms_k: float
+    noise_k: float
+    peak_contrast_k: float
+    correlation: float
+    model_contrast_k: np.ndarray
+
+
+def _local_minima(cost: np.ndarray, n: int) -> list[tuple[int, int]]:
+    """Indices of up to ``n`` lowest local minima of a 2-D cost grid."""
+    padded = np.pad(cost, 1, constant_values=np.inf)
+    centre = padded[1:-1, 1:-1]
+    is_min = np.ones_like(cost, dtype=bool)
+    for di in (-1, 0, 1):
+        for dj in (-1, 0, 1):
+            if di or dj:
+                nb = padded[1 + di:padded.shape[0] - 1 + di, 1 + dj:padded.shape[1] - 1 + dj]
+                is_min &= centre <= nb
+    idx = np.argwhere(is_min)
+    order = np.argsort(cost[is_min])[:n]
+    return [tuple(idx[k]) for k in order]
+
+
+def invert_anomaly(
+    time_s: ArrayLike,
+    centre_k: ArrayLike,
+    background_k: ArrayLike,
+    forcing: Forcing,
+    soil: Soil,
+    radius_m: float,
+    noise_k: float | None = None,
+    table: SiteTable | None = None,
+    height_m: float = 0.05,
+) -> Inversion:
+    """Estimate burial depth and diffusivity of one anomaly.
+
+    Parameters
+    ----------
+    time_s : array_like, shape (S,)
+        Times the anomaly was observed (one per scan), UTC epoch seconds.
+    centre_k, background_k : array_like, shape (S,)
+        Temperature at the anomaly's centre and of its background ring, K. NaN scans are
+        dropped.
+    forcing : Forcing
+        Weather.
+    soil : Soil
+        Site soil (fitted diffusivity and surface parameters).
+    radius_m : float
+        Object radius from the anomaly's footprint, m.
+    noise_k : float, optional
+        1-sigma noise of the contrast ``centre - background`` per scan, K; default: the fit's
+        residual rms.
+    table : SiteTable, optional
+        Site table covering ``radius_m`` and ``time_s``; built on the fly when omitted
+        (seconds per call, so build it once per site for many anomalies).
+    height_m : float
+        Object height when the table is built here, m.
+
+    Returns
+    -------
+    Inversion
+    """
+    t = np.asarray(time_s, dtype=float)
+    c = np.asarray(centre_k, dtype=float)
+    b = np.asarray(background_k, dtype=float)
+    if t.ndim != 1 or c.shape != t.shape or b.shape != t.shape:
+        raise InvalidInput("time, centre and background must be 1-D of one length",
+                           field="centre_k")
+    if not (np.isfinite(radius_m) and radius_m > 0):
+        raise InvalidInput("radius must be positive", field="radius_m")
+    ok = np.isfinite(t) & np.isfinite(c) & np.isfinite(b)
+    if ok.sum() < 4:
+        raise InvalidInput("fewer than 4 valid scans", field="centre_k")
+    t, obs = t[ok], c[ok] - b[ok]
+    if table is None:
+        table = build_site_table(forcing, soil, radius_m, t, height_m=height_m)
+    grid = table.contrast_for(radius_m, t)
+    depths, la = table.depths_m, table.log10_alpha
+    spline = contrast_spline(depths, la, grid)
+    lo, hi = np.array([depths[0], la[0]]), np.array([depths[-1], la[-1]])
+
+    def resid(p: np.ndarray) -> np.ndarray:
+        return spline(p[None, :])[0] - obs
+
+    def jac(p: np.ndarray) -> np.ndarray:
+        x = p[None, :]
+        return np.stack([spline(x, nu=(1, 0))[0], spline(x, nu=(0, 1))[0]], axis=1)
+
+    cost = np.sum((grid - obs) ** 2, axis=-1)
+    span = hi - lo
+    fits = []
+    for i, j in _local_minima(cost, 4):
+        x0 = np.clip([depths[i], la[j]], lo + 1e-4 * span, hi - 1e-4 * span)
+        fits.append(least_squares(resid, x0, jac=jac, bounds=(lo, hi), method="trf",
+                                  x_scale=[0.01, 0.25], xtol=1e-10, ftol=1e-12))
+    fits.sort(key=lambda s: s.cost)
+    best = fits[0]
+    d, lalpha = best.x
+    r = best.fun
+    n, p = r.size, 2
+    rms = float(np.sqrt(np.mean(r**2)))
+    s2 = float(np.sum(r**2)) / max(n - p, 1)
+    noise = rms if noise_k is None else float(noise_k)
+    if noise_k is not None:
+        s2 = max(s2, noise**2)
+    jm = best.jac
+    try:
+        cov = np.linalg.inv(jm.T @ jm) * s2
+        sig = np.sqrt(np.clip(np.diag(cov), 0, None))
+        corr = float(cov[0, 1] / (sig[0] * sig[1])) if sig.all() else 0.0
+    except np.linalg.LinAlgError:
+        sig = np.array([np.inf, np.inf])
+        corr = 0.0
+    model = spline(best.x[None, :])[0]
+    peak = float(np.max(np.abs(model)))
+    alpha = 10.0**lalpha
+    tol_d = 0.02 * (depths[-1] - depths[-2])
+    tol_a = 0.02 * (la[1] - la[0])
+    # another minimum statistically as good (delta chi2 < 4) but at another depth
+    rivals = [f for f in fits[1:]
+              if 2 * (f.cost - best.cost) / s2 < AMBIGUITY_DCHI2
+              and abs(f.x[0] - d) > max(2 * sig[0], 0.005)]
+    if peak < MIN_CONTRAST_SNR * noise:
+        status = "weak_contrast"
+    elif d >= depths[-1] - tol_d or lalpha <= la[0] + tol_a or lalpha >= la[-1] - tol_a:
+        status = "at_bound"
+    elif (sig[0] > MAX_DEPTH_SIGMA_M or sig[1] > MAX_LOG10_ALPHA_SIGMA or rivals
+          or (noise_k is not None and rms > MAX_MISFIT_RATIO * noise)):
+        status = "not_characterised"
+    else:
+        status = "ok"
+    return Inversion(
+        depth_m=float(d), depth_sigma_m=float(sig[0]), alpha_m2s=float(alpha),
+        alpha_sigma_m2s=float(alpha * np.log(10.0) * sig[1]),
+        log10_alpha_sigma=float(sig[1]), status=status, residual_rms_k=rms, noise_k=noise,
+        peak_contrast_k=peak, correlation=corr, model_contrast_k=model,
+    )

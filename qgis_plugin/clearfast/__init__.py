@@ -1,0 +1,8 @@
+"""CLEARFAST QGIS plugin: open survey products and run the clearfast toolkit from Processing."""
+
+
+def classFactory(iface=None):  # noqa: N802 (QGIS's name)
+    """QGIS entry point; ``iface`` is None under ``qgis_process`` and in tests."""
+    from .plugin import ClearfastPlugin
+
+    return ClearfastPlugin(iface)

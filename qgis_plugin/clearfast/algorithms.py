@@ -1,0 +1,274 @@
+"""Processing algorithms that call the clearfast toolkit's command line.
+
+Each algorithm runs ``clearfast <subcommand> ... --progress json`` as a child process (an
+argument list, never a shell string), streams its progress into the feedback, stops it when the
+user cancels and returns the products as layers (loaded into the project on completion).
+"""
+
+from __future__ import annotations
+
+import glob
+import json
+import os
+
+from qgis.core import (
+    QgsProcessing,
+    QgsProcessingAlgorithm,
+    QgsProcessingContext,
+    QgsProcessingException,
+    QgsProcessingOutputBoolean,
+    QgsProcessingOutputFile,
+    QgsProcessingOutputFolder,
+    QgsProcessingOutputMultipleLayers,
+    QgsProcessingOutputNumber,
+    QgsProcessingOutputVectorLayer,
+    QgsProcessingParameterFile,
+    QgsProcessingParameterFileDestination,
+    QgsProcessingParameterFolderDestination,
+    QgsProcessingParameterNumber,
+    QgsRasterLayer,
+    QgsVectorLayer,
+)
+from qgis.PyQt.QtGui import QIcon
+
+from .toolkit import (
+    ToolkitCancelled,
+    ToolkitMissing,
+    error_line,
+    run_toolkit,
+    toolkit_available,
+)
+
+ICON_PATH = os.path.join(os.path.dirname(__file__), "icons", "clearfast.svg")
+PRODUCT_LAYERS = (("suspects", "Suspects"), ("anomalies", "Anomaly outlines"),
+                  ("markers", "Markers"), ("footprint", "Footprint"))
+
+
+def gpkg_uri(gpkg: str, layer: str) -> str:
+    """OGR data source URI of one GeoPackage layer."""
+    return f"{gpkg}|layername={layer}"
+
+
+class ToolkitAlgorithm(QgsProcessingAlgorithm):
+    """Shared behaviour: toolkit check, run with progress and cancellation, layer outputs."""
+
+    NAME = ""
+    TITLE = ""
+    HELP = ""
+
+    def name(self):
+        return self.NAME
+
+    def displayName(self):  # noqa: N802 (QGIS's name)
+        return self.TITLE
+
+    def group(self):
+        return "Survey processing"
+
+    def groupId(self):  # noqa: N802 (QGIS's name)
+        return "survey"
+
+    def icon(self):
+        return QIcon(ICON_PATH)
+
+    def shortHelpString(self):  # noqa: N802 (QGIS's name)
+        return self.HELP + "\n\nRuns the clearfast toolkit's command line (`clearfast`)."
+
+    def createInstance(self):  # noqa: N802 (QGIS's name)
+        return type(self)()
+
+    def canExecute(self):  # noqa: N802 (QGIS's name)
+        return toolkit_available()
+
+    def run_cli(self, args, feedback):
+        """Run ``clearfast ARGS``; raise QgsProcessingException on failure or cancellation."""
+        try:
+            result = run_toolkit(args, feedback)
+        except ToolkitMissing as exc:
+            raise QgsProcessingException(str(exc)) from None
+        except ToolkitCancelled as exc:
+            raise QgsProcessingException(str(exc)) from None
+        return result
+
+    def check(self, result):
+        if result.returncode != 0:
+            raise QgsProcessingException(f"clearfast failed: {error_line(result)}")
+        return result
+
+    @staticmethod
+    def load_on_completion(context, uri: str, name: str, provider: str = "ogr") -> bool:
+        """Check ``uri`` opens as a valid layer and add it to the layers loaded at the end."""
+        layer = (QgsVectorLayer(uri, name, provider) if provider in ("ogr", "delimitedtext")
+                 else QgsRasterLayer(uri, name, provider))
+        if not layer.isValid():
+            return False
+        context.temporaryLayerStore().addMapLayer(layer)
+        details = QgsProcessingContext.LayerDetails(name, context.project(), name)
+        context.addLayerToLoadOnCompletion(layer.id(), details)
+        return True
+
+    def product_layers(self, folder, context, feedback) -> dict:
+        """Outputs for a products folder: one URI per GeoPackage layer and the mosaics."""
+        outputs = {"PRODUCTS": folder}
+        gpkg = os.path.join(folder, "anomalies.gpkg")
+        for name, title in PRODUCT_LAYERS:
+            uri = gpkg_uri(gpkg, name)
+            if os.path.isfile(gpkg) and self.load_on_completion(context, uri, title):
+                outputs[name.upper()] = uri
+            else:
+                feedback.reportError(f"{gpkg}: no {name} layer", False)
+        mosaics = sorted(glob.glob(os.path.join(folder, "mosaics", "scan_*.tif")))
+        outputs["MOSAICS"] = [p for p in mosaics if self.load_on_completion(
+            context, p, os.path.splitext(os.path.basename(p))[0], "gdal")]
+        return outputs
+
+    def add_product_outputs(self):
+        self.addOutput(QgsProcessingOutputFolder("PRODUCTS", "Products folder"))
+        for name, title in PRODUCT_LAYERS:
+            self.addOutput(QgsProcessingOutputVectorLayer(name.upper(), title))
+        self.addOutput(QgsProcessingOutputMultipleLayers("MOSAICS", "Scan mosaics"))
+
+
+class ProcessSurveyAlgorithm(ToolkitAlgorithm):
+    NAME = "processsurvey"
+    TITLE = "Process survey"
+    HELP = ("Run the whole chain on a survey folder: calibration, mosaics, anomaly detection, "
+            "depth and diffusivity estimation. Writes a products folder and loads its layers.")
+
+    def initAlgorithm(self, config=None):  # noqa: N802 (QGIS's name)
+        self.addParameter(QgsProcessingParameterFile(
+            "SURVEY", "Survey folder", behavior=QgsProcessingParameterFile.Folder))
+        self.addParameter(QgsProcessingParameterFolderDestination("OUTPUT", "Products folder"))
+        self.add_product_outputs()
+
+    def processAlgorithm(self, parameters, context, feedback):  # noqa: N802 (QGIS's name)
+        survey = self.parameterAsFile(parameters, "SURVEY", context)
+        out = self.parameterAsString(parameters, "OUTPUT", context)
+        self.check(self.run_cli(["process", survey, "-o", out, "--progress", "json"], feedback))
+        return {"OUTPUT": out, **self.product_layers(out, context, feedback)}
+
+
+class RerunDetectionAlgorithm(ToolkitAlgorithm):
+    NAME = "rerundetection"
+    TITLE = "Re-run detection with new parameters"
+    HELP = ("Re-run anomaly detection on the mosaics of an existing products folder. D1: disc "
+            "diameter of the top-hat (larger than the largest expected mine), D2: disc diameter "
+            "of the binary opening (D2 < D1), epsilon: tail fraction of the contrast thresholds, "
+            "l: minimum number of scans a blob must appear in (empty = half the scans), gamma: "
+            "occurrence threshold of the combined hot/cold maps (empty = toolkit default).")
+
+    def initAlgorithm(self, config=None):  # noqa: N802 (QGIS's name)
+        self.addParameter(QgsProcessingParameterFile(
+            "PRODUCTS", "Products folder", behavior=QgsProcessingParameterFile.Folder))
+        self.addParameter(QgsProcessingParameterNumber(
+            "D1", "D1: top-hat disc diameter (m)", QgsProcessingParameterNumber.Double, 0.5,
+            minValue=0.01))
+        self.addParameter(QgsProcessingParameterNumber(
+            "D2", "D2: opening disc diameter (m)", QgsProcessingParameterNumber.Double, 0.05,
+            minValue=0.0))
+        self.addParameter(QgsProcessingParameterNumber(
+            "EPSILON", "epsilon: threshold tail fraction", QgsProcessingParameterNumber.Double,
+            0.01, minValue=0.0, maxValue=0.5))
+        self.addParameter(QgsProcessingParameterNumber(
+            "LEVEL", "l: minimum number of scans", QgsProcessingParameterNumber.Integer,
+            None, optional=True, minValue=1))
+        self.addParameter(QgsProcessingParameterNumber(
+            "GAMMA", "gamma: occurrence threshold", QgsProcessingParameterNumber.Double,
+            None, optional=True, minValue=0.0))
+        self.add_product_outputs()
+
+    def checkParameterValues(self, parameters, context):  # noqa: N802 (QGIS's name)
+        ok, message = super().checkParameterValues(parameters, context)
+        if ok:
+            d1 = self.parameterAsDouble(parameters, "D1", context)
+            d2 = self.parameterAsDouble(parameters, "D2", context)
+            if not d2 < d1:
+                return False, "D2 must be smaller than D1 (otherwise every object is removed)"
+        return ok, message
+
+    def processAlgorithm(self, parameters, context, feedback):  # noqa: N802 (QGIS's name)
+        folder = self.parameterAsFile(parameters, "PRODUCTS", context)
+        args = ["detect", folder,
+                "--d1", repr(self.parameterAsDouble(parameters, "D1", context)),
+                "--d2", repr(self.parameterAsDouble(parameters, "D2", context)),
+                "--epsilon", repr(self.parameterAsDouble(parameters, "EPSILON", context))]
+        if parameters.get("LEVEL") not in (None, ""):
+            args += ["--level", str(self.parameterAsInt(parameters, "LEVEL", context))]
+        if parameters.get("GAMMA") not in (None, ""):
+            args += ["--gamma", repr(self.parameterAsDouble(parameters, "GAMMA", context))]
+        self.check(self.run_cli([*args, "--progress", "json"], feedback))
+        return self.product_layers(folder, context, feedback)
+
+
+class ExportMineActionAlgorithm(ToolkitAlgorithm):
+    NAME = "exportmineaction"
+    TITLE = "Export for a mine action centre"
+    HELP = ("Write a WGS84 GeoPackage and a CSV of the suspects with the fields a national mine "
+            "action database imports (stable ids, lat/lon, UTM, survey date, method, evidence, "
+            "confidence, depth, diameter, class cue, GNSS fix, status). Every point is an "
+            "indication, never a confirmed hazardous area.")
+
+    def initAlgorithm(self, config=None):  # noqa: N802 (QGIS's name)
+        self.addParameter(QgsProcessingParameterFile(
+            "PRODUCTS", "Products folder", behavior=QgsProcessingParameterFile.Folder))
+        self.addParameter(QgsProcessingParameterFolderDestination("OUTPUT", "Output folder"))
+        self.addOutput(QgsProcessingOutputVectorLayer(
+            "INDICATIONS", "Mine action indications", QgsProcessing.TypeVectorPoint))
+        self.addOutput(QgsProcessingOutputFile("CSV", "Mine action CSV"))
+        self.addOutput(QgsProcessingOutputNumber("COUNT", "Number of indications"))
+
+    def processAlgorithm(self, parameters, context, feedback):  # noqa: N802 (QGIS's name)
+        folder = self.parameterAsFile(parameters, "PRODUCTS", context)
+        out = self.parameterAsString(parameters, "OUTPUT", context)
+        result = self.check(self.run_cli(
+            ["export", folder, "--mine-action", "-o", out, "--progress", "json"], feedback))
+        gpkg = os.path.join(out, "mine_action.gpkg")
+        uri = gpkg_uri(gpkg, "indications")
+        if not self.load_on_completion(context, uri, "Mine action indications"):
+            raise QgsProcessingException(f"{gpkg}: the export wrote no indications layer")
+        count = next((e.get("count") for e in result.events if e.get("event") == "result"),
+                     None)
+        return {"OUTPUT": out, "INDICATIONS": uri, "CSV": os.path.join(out, "mine_action.csv"),
+                "COUNT": count}
+
+
+class ValidateSurveyAlgorithm(ToolkitAlgorithm):
+    NAME = "validatesurvey"
+    TITLE = "Validate survey"
+    HELP = ("Check a survey folder completely (manifest, frames, logs, markers) and report every "
+            "problem. Writes the toolkit's JSON report when an output file is given.")
+
+    def initAlgorithm(self, config=None):  # noqa: N802 (QGIS's name)
+        self.addParameter(QgsProcessingParameterFile(
+            "SURVEY", "Survey folder", behavior=QgsProcessingParameterFile.Folder))
+        self.addParameter(QgsProcessingParameterFileDestination(
+            "REPORT", "Validation report (JSON)", "JSON files (*.json)", optional=True))
+        self.addOutput(QgsProcessingOutputBoolean("VALID", "Survey is valid"))
+        self.addOutput(QgsProcessingOutputVectorLayer(
+            "MARKERS", "Survey markers", QgsProcessing.TypeVectorPoint))
+
+    def processAlgorithm(self, parameters, context, feedback):  # noqa: N802 (QGIS's name)
+        survey = self.parameterAsFile(parameters, "SURVEY", context)
+        report = self.parameterAsFileOutput(parameters, "REPORT", context)
+        result = self.run_cli(["validate", survey, "--json"], feedback)
+        if result.returncode not in (0, 1):
+            raise QgsProcessingException(f"clearfast failed: {error_line(result)}")
+        valid = result.returncode == 0
+        text = result.stdout.strip()
+        try:
+            doc = json.loads(text) if text else {}
+        except ValueError:
+            doc = {}
+        if not valid:
+            feedback.reportError(f"survey is not valid: {error_line(result)}", False)
+        if report:
+            with open(report, "w", encoding="utf-8") as fh:
+                fh.write((json.dumps(doc, indent=2) if doc else text) + "\n")
+        outputs = {"VALID": valid, "REPORT": report or None}
+        markers = os.path.join(survey, "markers.csv")
+        if os.path.isfile(markers):
+            uri = ("file://" + markers.replace(os.sep, "/") +
+                   "?type=csv&xField=lon_deg&yField=lat_deg&crs=EPSG:4326&detectTypes=yes")
+            if self.load_on_completion(context, uri, "Survey markers", "delimitedtext"):
+                outputs["MARKERS"] = uri
+        return outputs

@@ -1,0 +1,41 @@
+"""The Processing provider "CLEARFAST"."""
+
+from __future__ import annotations
+
+import os
+
+from qgis.core import QgsProcessingProvider
+from qgis.PyQt.QtGui import QIcon
+
+from .algorithms import (
+    ExportMineActionAlgorithm,
+    ProcessSurveyAlgorithm,
+    RerunDetectionAlgorithm,
+    ValidateSurveyAlgorithm,
+)
+
+ICON_PATH = os.path.join(os.path.dirname(__file__), "icons", "clearfast.svg")
+
+
+class ClearfastProvider(QgsProcessingProvider):
+    """Algorithms that run the clearfast toolkit (``clearfast:<name>`` in qgis_process)."""
+
+    def id(self):
+        return "clearfast"
+
+    def name(self):
+        return "CLEARFAST"
+
+    def longName(self):  # noqa: N802 (QGIS's name)
+        return "CLEARFAST stand-off thermal-IR minefield survey"
+
+    def icon(self):
+        return QIcon(ICON_PATH)
+
+    def svgIconPath(self):  # noqa: N802 (QGIS's name)
+        return ICON_PATH
+
+    def loadAlgorithms(self):  # noqa: N802 (QGIS's name)
+        for cls in (ProcessSurveyAlgorithm, RerunDetectionAlgorithm, ExportMineActionAlgorithm,
+                    ValidateSurveyAlgorithm):
+            self.addAlgorithm(cls())

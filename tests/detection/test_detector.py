@@ -1,0 +1,137 @@
+"""The detector on a synthetic diurnal stack, features, polarity, class cues."""
+
+import numpy as np
+import pytest
+from scipy import ndimage
+
+from clearfast_gis.detection import (
+    blob_features,
+    detect_anomalies,
+    features_table,
+    local_solar_hour,
+    solar_elevation_deg,
+    summary_polarity,
+)
+from clearfast_gis.detection.stretch import stretch_limits, stretch_threshold
+
+T0 = 1763164800.0  # 2025-11-15T00:00:00Z
+H, W, N = 160, 200, 12
+DISCS = [(40.3, 50.7, 5.0), (100.2, 60.1, 6.0), (70.0, 120.4, 5.5), (120.5, 150.2, 5.5)]
+SPOT = (20, 170)
+PATCH = (slice(100, 150), slice(5, 45))
+
+
+@pytest.fixture(scope="module")
+def diurnal():
+    rng = np.random.default_rng(3)
+    times = T0 + 3600.0 + np.arange(N) * 7200.0
+    hour = local_solar_hour(times, 0.0)
+    amp = np.sin(2 * np.pi * (hour - 9.0) / 24.0)  # warm by day, cool by night
+    rr, cc = np.mgrid[:H, :W]
+    texture = ndimage.gaussian_filter(rng.normal(size=(H, W)), 1.0)
+    texture /= texture.std()
+    stack = []
+    for i in range(N):
+        f = 288.0 + 5 * amp[i] + 0.1 * texture * (1 + 0.5 * amp[i])
+        for r, c, rad in DISCS:
+            f += 1.5 * amp[i] * np.clip(rad + 0.5 - np.hypot(rr - r, cc - c), 0, 1)
+        if i == 3:  # a hot spot seen in one scan only
+            f += 3.0 * (np.hypot(rr - SPOT[0], cc - SPOT[1]) < 4)
+        patch = np.zeros((H, W), bool)
+        patch[PATCH] = True
+        f += 2.0 * amp[i] * patch  # a warm patch larger than D1
+        f += rng.normal(0, 0.05, (H, W))
+        stack.append(f.astype(np.float32))
+    stack = np.array(stack)
+    stack[:, :3, :10] = np.nan  # some no-data
+    result = detect_anomalies(stack, d1_px=21, d2_px=4, epsilon=0.01, gamma=6)
+    feats = blob_features(result.labels, stack, times, detection=result, longitude_deg=0.0,
+                          pixel_size_m=0.03)
+    return stack, times, result, feats
+
+
+def test_all_discs_found_with_position_size_polarity(diurnal):
+    _, _, result, feats = diurnal
+    best = sorted(feats, key=lambda f: -f.score)[: len(DISCS)]
+    for r, c, rad in DISCS:
+        match = [f for f in best if abs(f.row - r) < 2 and abs(f.col - c) < 2]
+        assert len(match) == 1, (r, c)
+        f = match[0]
+        assert abs(f.row - r) <= 0.5 and abs(f.col - c) <= 0.5
+        assert f.diameter_px == pytest.approx(2 * rad, rel=0.10)
+        assert f.polarity == "warm_day_cool_night"
+        assert f.circularity > 0.6
+        assert f.n_scans >= 10
+        assert f.diameter_m == pytest.approx(f.diameter_px * 0.03)
+        # contrast series: positive by day, negative by night, ~1.5 K at the peak
+        assert f.contrast_k.shape == (N,)
+        assert np.max(f.contrast_k) > 1.0 and np.min(f.contrast_k) < -1.0
+        np.testing.assert_allclose(f.contrast_k, f.centre_k - f.ring_k)
+
+
+def test_clutter_rejected(diurnal):
+    _, _, result, _ = diurnal
+    assert result.labels[SPOT] == 0  # one scan only: fails the vote
+    assert not result.mask[110:140, 15:35].any()  # bigger than D1: no top-hat residue
+    assert result.votes[SPOT] < result.level
+
+
+def test_result_shapes_and_nodata(diurnal):
+    stack, _, result, _ = diurnal
+    assert result.mask_hot.shape == (H, W) and result.labels.dtype == np.int32
+    assert result.scan_hot.shape == (N, H, W)
+    assert not result.mask[:3, :10].any()
+    assert result.level == N / 2
+
+
+def test_multiband_stack_runs(diurnal):
+    stack, _, _, _ = diurnal
+    both = np.stack([stack[:4], stack[:4] + 1.0], axis=1)  # (4, 2, H, W)
+    res = detect_anomalies(both, 21, 4)
+    assert res.scan_hot.shape == (4, H, W) and res.level == 4.0
+    feats = blob_features(res.labels, both)
+    assert feats and feats[0].contrast_k.shape == (4, 2)
+
+
+def test_features_table_and_transform(diurnal):
+    from affine import Affine
+
+    stack, times, result, _ = diurnal
+    tr = Affine(0.05, 0, 500000.0, 0, -0.05, 4000000.0)
+    feats = blob_features(result.labels, stack, times, transform=tr, detection=result)
+    f = feats[0]
+    assert f.x == pytest.approx(500000.0 + (f.col + 0.5) * 0.05)
+    assert f.y == pytest.approx(4000000.0 - (f.row + 0.5) * 0.05)
+    assert f.area_m2 == pytest.approx(f.area_px * 0.0025)
+    table = features_table(feats)
+    assert len(table["id"]) == len(feats) and table["score"].dtype.kind == "f"
+
+
+def test_stretch_limits_and_threshold():
+    img = np.arange(100, dtype=np.float32)
+    lo, hi = stretch_limits(img, 0.1)
+    assert (lo, hi) == (9.0, 89.0)
+    g = stretch_threshold(img, 0.1)
+    assert g.sum() == np.sum(img > 49.0)
+    assert not stretch_threshold(np.zeros((4, 4)), 0.01).any()
+
+
+def test_solar_time_and_elevation():
+    # solar noon at Greenwich on 15 November: ~11:45 UTC (equation of time +15.5 min)
+    t = T0 + 12 * 3600.0
+    assert local_solar_hour(t, 0.0) == pytest.approx(12.0 + 15.4 / 60, abs=0.05)
+    assert local_solar_hour(t, 30.0) == pytest.approx(14.0 + 15.4 / 60, abs=0.05)
+    # noon elevation at 35 N in mid-November: 90 - 35 - 18.5 = 36.5 deg
+    noon = T0 + (12 - 15.4 / 60 - 33.36 / 15) * 3600.0
+    assert solar_elevation_deg(noon, 35.0, 33.36) == pytest.approx(36.5, abs=0.5)
+    assert solar_elevation_deg(T0, 35.0, 33.36) < 0  # 02:13 local: night
+
+
+def test_summary_polarity_rules():
+    times = T0 + 3600.0 + np.arange(12) * 7200.0  # 01:00 ... 23:00 UTC at lon 0
+    day_warm = np.array([-1, -1, -1, -1, 1, 1, 1, 1, 1, 1, -1, -1])
+    assert summary_polarity(day_warm, times, 0.0) == "warm_day_cool_night"
+    assert summary_polarity(day_warm) == "mixed"
+    assert summary_polarity(np.ones(12), times, 0.0) == "warm"
+    assert summary_polarity(-np.ones(12), times, 0.0) == "cool"
+    assert summary_polarity(np.zeros(12)) == "none"
