@@ -41,3 +41,55 @@ products_opt = click.option(
 def make_progress(mode: str) -> Progress:
     """The progress reporter for ``--progress MODE``."""
     return Progress(mode)
+
+
+def mosaic_options(f):
+    """Mosaicking options of ``process`` (pixel size, co-registration, seam balancing)."""
+    f = click.option("--pixel-size", "pixel_size_m", type=click.FloatRange(min=0.001),
+                     default=None, help="Mosaic cell size in metres (default: from the "
+                     "mission's ground resolution).")(f)
+    f = click.option("--no-coregister", "no_coregister", is_flag=True,
+                     help="Keep the geometric placement of every frame (no MI correction).")(f)
+    f = click.option("--seam-balance", is_flag=True,
+                     help="Apply the paper's histogram seam balancing (changes temperatures; "
+                     "recorded in the products).")(f)
+    f = click.option("--reference-scan", type=click.IntRange(min=0), default=0,
+                     show_default=True, help="Scan the others are co-registered to.")(f)
+    f = click.option("--no-atmosphere", is_flag=True,
+                     help="Skip the atmospheric correction.")(f)
+    return f
+
+
+def detection_options(f):
+    """The morphological detector's parameters (paper §4), in metres on mosaics."""
+    f = click.option("--d1", "d1_m", type=click.FloatRange(min=0.0, min_open=True),
+                     default=0.5, show_default=True,
+                     help="Top-hat disk D1, metres (larger than the largest mine).")(f)
+    f = click.option("--d2", "d2_m", type=click.FloatRange(min=0.0, min_open=True),
+                     default=0.06, show_default=True,
+                     help="Opening disk D2 < D1, metres (removes smaller clutter).")(f)
+    f = click.option("--epsilon", type=click.FloatRange(0.0, 0.5, min_open=True),
+                     default=0.01, show_default=True,
+                     help="Histogram stretching percentile fraction.")(f)
+    f = click.option("--level", type=click.IntRange(min=1), default=None,
+                     help="Majority-voting level l (default: half the scans).")(f)
+    f = click.option("--gamma", type=click.FloatRange(min=0.0), default=None,
+                     help="Combination threshold (default: binary OR).")(f)
+    return f
+
+
+def build_options(params: dict, invert: bool = True):
+    """ProcessOptions from the click parameters of ``process`` / ``detect``."""
+    from clearfast_gis.pipeline import ProcessOptions
+
+    if params.get("d2_m") is not None and params.get("d1_m") is not None \
+            and params["d2_m"] >= params["d1_m"]:
+        raise click.UsageError("D2 must be smaller than D1")
+    kw = {k: v for k, v in params.items()
+          if k in ("pixel_size_m", "seam_balance", "reference_scan", "d1_m", "d2_m", "epsilon",
+                   "level", "gamma") and v is not None}
+    if params.get("no_coregister"):
+        kw["coregister"] = False
+    if params.get("no_atmosphere"):
+        kw["atmosphere"] = False
+    return ProcessOptions(invert=invert, **kw)

@@ -226,30 +226,33 @@ def export_mine_action(products_dir: str | os.PathLike, out_dir: str | os.PathLi
 
     products = Path(products_dir)
     out = Path(out_dir) if out_dir is not None else products / "mine_action"
-    progress.start("mine_action", 3)
     manifest = read_products_manifest(products)
     gpkg_in = products / "anomalies.gpkg"
     if not gpkg_in.is_file():
         raise InvalidInput("missing: no anomalies.gpkg in the products folder", gpkg_in)
+    progress.start("mine_action", 3)
     try:
-        suspects = pyogrio.read_dataframe(gpkg_in, layer="suspects")
-    except Exception as exc:  # pyogrio raises DataSourceError / DataLayerError
-        raise InvalidInput(f"cannot read the suspects layer ({exc})", gpkg_in,
-                           "suspects") from None
-    missing = [c for c in ("anomaly_id", "x", "y", "class_cue", "status") if c not in suspects]
-    if missing:
-        raise InvalidInput("missing column", gpkg_in, f"suspects.{missing[0]}")
-    progress.advance()
-    epsg = int(manifest["crs"]["epsg"])
-    table = mine_action_table(suspects, manifest["survey_id"], manifest["time"]["start_utc"],
-                              epsg)
-    progress.advance()
-    frame = gpd.GeoDataFrame(
-        table, geometry=gpd.points_from_xy(table["longitude_deg"], table["latitude_deg"]),
-        crs=4326)
-    gpkg_out = Path(write_geopackage(out / GPKG_NAME, {LAYER_NAME: frame},
-                                     {LAYER_NAME: mine_action_style()}))
-    csv_out = write_text(out / CSV_NAME, table_to_csv(table))
-    progress.advance()
-    progress.close()
+        try:
+            suspects = pyogrio.read_dataframe(gpkg_in, layer="suspects")
+        except Exception as exc:  # pyogrio raises DataSourceError / DataLayerError
+            raise InvalidInput(f"cannot read the suspects layer ({exc})", gpkg_in,
+                               "suspects") from None
+        missing = [c for c in ("anomaly_id", "x", "y", "class_cue", "status")
+                   if c not in suspects]
+        if missing:
+            raise InvalidInput("missing column", gpkg_in, f"suspects.{missing[0]}")
+        progress.advance()
+        epsg = int(manifest["crs"]["epsg"])
+        table = mine_action_table(suspects, manifest["survey_id"],
+                                  manifest["time"]["start_utc"], epsg)
+        progress.advance()
+        frame = gpd.GeoDataFrame(
+            table, geometry=gpd.points_from_xy(table["longitude_deg"], table["latitude_deg"]),
+            crs=4326)
+        gpkg_out = Path(write_geopackage(out / GPKG_NAME, {LAYER_NAME: frame},
+                                         {LAYER_NAME: mine_action_style()}))
+        csv_out = write_text(out / CSV_NAME, table_to_csv(table))
+        progress.advance()
+    finally:
+        progress.close()
     return MineActionExport(gpkg_out, Path(csv_out), len(table))

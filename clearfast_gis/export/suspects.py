@@ -10,7 +10,7 @@ from collections.abc import Iterable, Mapping
 import numpy as np
 
 from clearfast_gis.errors import InvalidInput
-from clearfast_gis.export._schema import validate_record
+from clearfast_gis.export._schema import load_schema, validate_record
 
 SUSPECT_COLUMNS: dict[str, str] = {
     "anomaly_id": "str",
@@ -74,8 +74,10 @@ def _normalise(record: Mapping, index: int, path) -> dict:
             parse_contrast_series(str(series))
         except (ValueError, TypeError) as exc:
             raise InvalidInput(str(exc), path, f"suspects[{index}].contrast_series") from None
+    required = set(load_schema("anomaly")["required"])
     for key in SUSPECT_COLUMNS:
-        rec.setdefault(key, None)
+        if key not in required:
+            rec.setdefault(key, None)
     return rec
 
 
@@ -124,6 +126,9 @@ def suspects_frame(records: Iterable[Mapping], epsg: int, path: str | os.PathLik
         if rec["anomaly_id"] in seen:
             raise InvalidInput("repeated anomaly_id", where, f"suspects[{i}].anomaly_id")
         seen.add(rec["anomaly_id"])
+    for rec in recs:
+        for key in SUSPECT_COLUMNS:
+            rec.setdefault(key, None)
     extras = [k for rec in recs for k in rec if k not in SUSPECT_COLUMNS]
     extras = list(dict.fromkeys(extras))
     columns = [*SUSPECT_COLUMNS, *extras]

@@ -153,7 +153,13 @@ def _solve_elevation(camera: Camera, fn, lo: float = -90.0, hi: float = 90.0) ->
     """Root of ``fn(angular_box(camera, E))`` in E, by Brent's method."""
     from scipy.optimize import brentq
 
-    return float(brentq(lambda e: fn(angular_box(camera, e)), lo, hi, xtol=1e-10))
+    try:
+        return float(brentq(lambda e: fn(angular_box(camera, e)), lo, hi, xtol=1e-9))
+    except ValueError:
+        raise InvalidInput(
+            "the pinhole frames cannot reach the near edge of the area this close to the nadir;"
+            " move the platform farther from the area or plan with the equiangular model",
+            None, "platform") from None
 
 
 def _chain(camera: Camera, first_deg: float, n_rows: int, overlap: float) -> list[float]:
@@ -196,18 +202,19 @@ def _rows_elevations(camera: Camera, far_deg: float, near_deg: float,
     def end(o: float) -> float:
         return angular_box(camera, _chain(camera, first, n, o)[-1]).bottom_deg - near_deg
 
+    # end() rises with the overlap: greedy rows end at or below the near edge (end <= 0)
     lo, hi = overlap, 0.999
-    if end(hi) > 0.0:  # cannot stretch further: keep the greedy rows
+    if end(hi) <= 0.0:
         return rows
     for _ in range(60):
         mid = 0.5 * (lo + hi)
         if end(mid) <= 0.0:
-            hi = mid
-        else:
             lo = mid
-        if hi - lo < 1e-10:
+        else:
+            hi = mid
+        if hi - lo < 1e-7:
             break
-    return _chain(camera, first, n, lo if end(lo) <= 0.0 else hi)
+    return _chain(camera, first, n, lo)
 
 
 def _pan_centres(a0: float, a1: float, half: float, overlap: float) -> list[float]:

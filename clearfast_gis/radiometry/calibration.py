@@ -20,6 +20,7 @@ from numpy.typing import ArrayLike
 
 from clearfast_gis.errors import InvalidInput
 from clearfast_gis.radiometry.table import BandTable
+from clearfast_gis.radiometry.timeseries import interpolate_log
 
 DEFAULT_MIN_CONTRAST_COUNTS = 4.0
 """Smallest ``|I_bb2 - I_bb1|`` (counts) for a pixel to be calibrated."""
@@ -215,7 +216,8 @@ def blackbody_temperature_at(
     log_time_s : array_like (T,)
         Log record times, UTC epoch seconds, increasing.
     log_t_k : array_like (T,)
-        Logged temperature, kelvin; NaN records are skipped.
+        Logged temperature, kelvin; NaN records are skipped; queries outside the log take
+        the nearest record's value (within ``max_gap_s``).
     time_s : array_like
         Query times, UTC epoch seconds.
     max_gap_s : float
@@ -228,18 +230,7 @@ def blackbody_temperature_at(
     ndarray of float64
         Temperature, kelvin, shape of ``time_s``.
     """
-    lt = np.asarray(log_time_s, dtype=np.float64)
-    lv = np.asarray(log_t_k, dtype=np.float64)
-    keep = np.isfinite(lt) & np.isfinite(lv)
-    lt, lv = lt[keep], lv[keep]
-    q = np.asarray(time_s, dtype=np.float64)
-    if lt.size == 0:
-        raise InvalidInput("no valid blackbody temperature records", source)
-    nearest = np.abs(q[..., None] - lt).min(axis=-1) if lt.size < 100_000 else None
-    if nearest is not None and np.any(nearest > max_gap_s):
-        raise InvalidInput(f"no blackbody temperature within {max_gap_s:g} s of a calibration "
-                           "event", source)
-    return np.interp(q, lt, lv)
+    return interpolate_log(log_time_s, log_t_k, time_s, max_gap_s, source)
 
 
 def select_events(

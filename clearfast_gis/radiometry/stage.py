@@ -30,6 +30,7 @@ from clearfast_gis.radiometry.calibration import (
     select_events,
 )
 from clearfast_gis.radiometry.table import BandTable
+from clearfast_gis.radiometry.timeseries import interpolate_log
 from clearfast_gis.units import c_to_k
 
 if TYPE_CHECKING:
@@ -100,18 +101,6 @@ class AirState:
     pressure_hpa: np.ndarray
 
 
-def _interp_column(time_s: np.ndarray, values: np.ndarray, query: np.ndarray, name: str,
-                   max_gap_s: float, source: str | None) -> np.ndarray:
-    ok = np.isfinite(time_s) & np.isfinite(values)
-    if not ok.any():
-        raise InvalidInput("no valid records", source, name)
-    t, v = time_s[ok], values[ok]
-    gap = np.abs(query[:, None] - t[None, :]).min(axis=1) if query.size else query
-    if np.any(gap > max_gap_s):
-        raise InvalidInput(f"no record within {max_gap_s:g} s of a frame", source, name)
-    return np.interp(query, t, v)
-
-
 def weather_at(weather: WeatherLog, time_s: ArrayLike, max_gap_s: float = DEFAULT_WEATHER_GAP_S,
                source: str | None = None) -> AirState:
     """Air temperature, humidity and pressure at given times from a weather log.
@@ -133,14 +122,13 @@ def weather_at(weather: WeatherLog, time_s: ArrayLike, max_gap_s: float = DEFAUL
         Arrays of shape (N,).
     """
     q = np.atleast_1d(np.asarray(time_s, dtype=np.float64))
-    t = np.asarray(weather.time_s, dtype=np.float64)
-    return AirState(
-        c_to_k(_interp_column(t, np.asarray(weather.air_temp_c), q, "AirTC_Avg", max_gap_s,
-                              source)),
-        np.clip(_interp_column(t, np.asarray(weather.rh_pct), q, "RH_Avg", max_gap_s, source),
-                0.0, 100.0),
-        _interp_column(t, np.asarray(weather.pressure_hpa), q, "BP_hPa_Avg", max_gap_s, source),
-    )
+
+    def column(values: np.ndarray, name: str) -> np.ndarray:
+        return interpolate_log(weather.time_s, values, q, max_gap_s, source, name)
+
+    return AirState(c_to_k(column(weather.air_temp_c, "AirTC_Avg")),
+                    np.clip(column(weather.rh_pct, "RH_Avg"), 0.0, 100.0),
+                    column(weather.pressure_hpa, "BP_hPa_Avg"))
 
 
 def apparent_temperature_frames(

@@ -129,7 +129,7 @@ class _Bounds:
         full = np.array([self.base.angle_rad * self.r, self.base.tx_px, self.base.ty_px,
                          math.log(self.base.scale) * self.r])
         full[self.active] = vec
-        return replace(self.base, angle_rad=full[0] / self.r, tx_px=float(full[1]),
+        return replace(self.base, angle_rad=float(full[0] / self.r), tx_px=float(full[1]),
                        ty_px=float(full[2]), scale=math.exp(full[3] / self.r))
 
     def grad_vec(self, grad: np.ndarray) -> np.ndarray:
@@ -215,8 +215,10 @@ def register_conformal(
         Fraction of the fixed image's valid samples that must overlap the moving image's
         valid area for the result to count as converged.
     min_metric : float
-        Smallest normalised MI, ``MI / min(H(fixed), H(moving))`` in [0, 1], for the result to
-        count as converged. Unrelated images score about 0.01-0.03.
+        Smallest normalised MI, ``(MI - bias) / min(H(fixed), H(moving))`` in [0, 1] (bias:
+        the Miller-Madow estimate of the plug-in MI's small-sample bias), for the result to
+        count as converged. Unrelated images score below 0.03, aligned views of one scene
+        above 0.15 even with 1 K of noise.
     max_samples : int
         Fixed samples per level (regular grid subsampling above this).
     smooth_px : float
@@ -252,8 +254,6 @@ def register_conformal(
     base = (ConformalTransform.identity(center) if init is None
             else replace(init.with_center(center), metric=math.nan, n_samples=0,
                          converged=True))
-    if not scale:
-        base = replace(base, scale=1.0 if init is None else base.scale)
     max_angle_rad = math.radians(max_angle_deg)
     shift_bound = (float(max_shift_px) if max_shift_px is not None
                    else float(max(hf, wf) + max(m0.shape)))
@@ -275,8 +275,6 @@ def register_conformal(
     mi = 0.0
     n_overlap = 0
     vec = np.zeros(len(active))
-    bounds = None
-    problem = None
     for level in range(levels - 1, -1, -1):
         factor = 0.5 ** level
         fl = masked_gaussian(fpyr[level], smooth_px)
@@ -305,7 +303,7 @@ def register_conformal(
         _score, result, mi, n_overlap, vec = best
         result = result.scaled(1.0 / factor)
 
-    assert problem is not None and bounds is not None
+    # levels >= 1, so problem and bounds are those of the finest level here
     # normalised MI and the convergence record at the finest level
     problem.evaluate(result, False)  # histogram of the final transform
     nmi = _normalised_mi(mi, problem.hist)

@@ -26,7 +26,7 @@ def thermal_scene(shape: tuple[int, int], seed: int = 0, n_blobs: int = 60) -> n
     seed : int
         Random seed.
     n_blobs : int
-        Number of Gaussian blobs (radius 3 to 25 pixels, +-3 K).
+        Number of Gaussian blobs (radius 3 to 25 pixels, +-3 K) per 640 x 512 pixels.
 
     Returns
     -------
@@ -37,12 +37,17 @@ def thermal_scene(shape: tuple[int, int], seed: int = 0, n_blobs: int = 60) -> n
     field = ndimage.gaussian_filter(rng.normal(size=shape), 6.0) * 40.0
     field += ndimage.gaussian_filter(rng.normal(size=shape), 2.0) * 6.0
     field += ndimage.gaussian_filter(rng.normal(size=shape), 1.2) * 1.5
-    rows, cols = np.mgrid[0:h, 0:w]
-    for _ in range(n_blobs):
+    n_blobs = int(round(n_blobs * h * w / (512 * 640))) if n_blobs else 0
+    for _ in range(max(n_blobs, 1)):
         r0, c0 = rng.uniform(0, h), rng.uniform(0, w)
         rad = rng.uniform(3.0, 25.0)
         amp = rng.uniform(-3.0, 3.0)
-        field += amp * np.exp(-((rows - r0) ** 2 + (cols - c0) ** 2) / (2.0 * rad * rad))
+        r_lo, r_hi = max(0, int(r0 - 4 * rad)), min(h, int(r0 + 4 * rad) + 1)
+        c_lo, c_hi = max(0, int(c0 - 4 * rad)), min(w, int(c0 + 4 * rad) + 1)
+        rows = np.arange(r_lo, r_hi)[:, None]
+        cols = np.arange(c_lo, c_hi)[None, :]
+        field[r_lo:r_hi, c_lo:c_hi] += amp * np.exp(
+            -((rows - r0) ** 2 + (cols - c0) ** 2) / (2.0 * rad * rad))
     return 15.0 + field
 
 
@@ -55,6 +60,9 @@ def make_pair(
     moving_shape: tuple[int, int] | None = None,
 ) -> tuple[np.ndarray, np.ndarray]:
     """A fixed and a moving image with ``fixed(x) = moving(truth(x))`` (before noise).
+
+    Pairs with the same seed and shapes share the scene (and the fixed image) when the truth
+    moves the moving footprint by less than a quarter of the image size.
 
     Parameters
     ----------
@@ -82,10 +90,13 @@ def make_pair(
     # canvas large enough to hold both images' footprints
     corners = np.array([[0, 0], [wm - 1, 0], [0, hm - 1], [wm - 1, hm - 1]], dtype=float)
     back = inv.apply(corners)
-    umin = min(0.0, back[:, 0].min()) - 8
-    vmin = min(0.0, back[:, 1].min()) - 8
-    umax = max(w - 1.0, back[:, 0].max()) + 8
-    vmax = max(h - 1.0, back[:, 1].max()) + 8
+    # a margin that depends on the shapes only (unless the truth needs more), so pairs of the
+    # same seed and shapes show the same scene whatever the truth
+    pad = max(h, w, hm, wm) // 4 + 32
+    umin = min(-pad, back[:, 0].min() - 8)
+    vmin = min(-pad, back[:, 1].min() - 8)
+    umax = max(w - 1.0 + pad, back[:, 0].max() + 8)
+    vmax = max(h - 1.0 + pad, back[:, 1].max() + 8)
     off = np.array([-math.floor(umin), -math.floor(vmin)])
     canvas_shape = (int(math.ceil(vmax)) + off[1] + 1, int(math.ceil(umax)) + off[0] + 1)
     scene = thermal_scene(canvas_shape, seed)

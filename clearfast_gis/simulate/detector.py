@@ -8,7 +8,7 @@ with a nominal gain that maps 240-345 K onto about 8 %-90 % of the bit depth. Th
 pattern is a smooth vignetting-like gain shading (+-4 %) and offset shading plus pixel-to-pixel
 scatter; the drift is a slow diurnal change of the common offset (+-20 counts), a per-pixel
 offset pattern (+-5 counts) and a 0.3 % gain change. Over one scan (30 min) it moves the
-calibrated temperature by less than 0.02 K, which the two-point calibration between scans
+calibrated temperature by less than 0.03 K, which the two-point calibration between scans
 removes (paper §3.3). The temporal noise is white with a standard deviation of NETD times the
 band radiance slope at 300 K (noise in radiance is nearly constant over the scene's range).
 """

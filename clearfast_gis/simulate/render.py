@@ -1,7 +1,8 @@
 """Rendering of camera frames from a radiance grid: ray tracing, footprint sampling, atmosphere.
 
-Every pixel's ray (shifted by the band's filter-wheel misregistration) is intersected with the
-ground plane (:meth:`Camera.ground_points`); the surface-leaving radiance is sampled there with
+Every pixel's ray (shifted by the band's filter-wheel misregistration,
+:class:`~clearfast_gis.simulate.rays.FrameRays`) is intersected with the ground plane; the
+surface-leaving radiance is sampled there with
 ``cv2.remap`` from a small stack of pre-blurred copies of the truth grid, choosing per pixel
 the copy whose Gaussian width matches the pixel's ground footprint (anti-aliasing: a pixel
 integrates the radiance over its footprint). The atmosphere between ground and camera uses the
@@ -18,6 +19,7 @@ import numpy as np
 from clearfast_gis.geometry.pose import CameraPose
 from clearfast_gis.radiometry.atmosphere import atmospheric_transmittance, observed_radiance
 from clearfast_gis.radiometry.table import BandTable
+from clearfast_gis.simulate.rays import FrameRays
 from clearfast_gis.simulate.scene import GridSpec
 
 #: Gaussian widths (sigma, truth-grid cells) of the pre-blurred radiance copies.
@@ -55,13 +57,6 @@ class Atmosphere:
     pressure_hpa: float
 
 
-def pixel_grid(width: int, height: int, shift_px: tuple[float, float] = (0.0, 0.0)
-               ) -> tuple[np.ndarray, np.ndarray]:
-    """Pixel-centre coordinates (u, v), each (H*W,), shifted by ``shift_px`` (du, dv)."""
-    v, u = np.mgrid[0:height, 0:width].astype(np.float64)
-    return (u.ravel() + shift_px[0], v.ravel() + shift_px[1])
-
-
 def footprint_m(range_m: np.ndarray, ray_z: np.ndarray, ifov_rad: float) -> np.ndarray:
     """Geometric-mean ground footprint of pixels, metres.
 
@@ -71,21 +66,19 @@ def footprint_m(range_m: np.ndarray, ray_z: np.ndarray, ifov_rad: float) -> np.n
     return range_m * ifov_rad / np.sqrt(sin_graze)
 
 
-def surface_radiance_frame(camera, pose: CameraPose, rgrid: RadianceGrid, ifov_rad: float,
-                           shift_px: tuple[float, float] = (0.0, 0.0)
-                           ) -> tuple[np.ndarray, np.ndarray]:
+def surface_radiance_frame(rays: FrameRays, pose: CameraPose, rgrid: RadianceGrid,
+                           ifov_rad: float) -> tuple[np.ndarray, np.ndarray]:
     """Surface-leaving radiance seen by each pixel, and the pixel's slant range.
 
     Parameters
     ----------
-    camera : EquiangularCamera or PinholeCamera
+    rays : FrameRays
+        The camera's pixel rays (with the band's filter-wheel misregistration).
     pose : CameraPose
         True pose of the camera.
     rgrid : RadianceGrid
     ifov_rad : float
         Angular size of a pixel, radians.
-    shift_px : (float, float)
-        Filter-wheel misregistration of the band, pixels.
 
     Returns
     -------
@@ -94,33 +87,29 @@ def surface_radiance_frame(camera, pose: CameraPose, rgrid: RadianceGrid, ifov_r
     range_m : float32 (H, W)
         Slant range camera-ground, metres (0 where the ray misses the ground).
     """
-    h, w = camera.height, camera.width
-    u, v = pixel_grid(w, h, shift_px)
-    rays = camera.rays(u, v, pose)
+    dx, dy, dz = rays.directions(pose)
+    hit = dz < -1e-6
     with np.errstate(invalid="ignore", divide="ignore"):
-        t = np.where(rays[:, 2] < -1e-6, -pose.position_m[2] / rays[:, 2], np.nan)
-    hit = np.isfinite(t)
-    gx = pose.position_m[0] + t * rays[:, 0]
-    gy = pose.position_m[1] + t * rays[:, 1]
-    rng_m = np.where(hit, t, 0.0)
+        t = np.where(hit, -pose.position_m[2] / np.where(hit, dz, -1.0), 0.0)
     grid = rgrid.grid
-    map_x = ((gx - grid.x0) / grid.pixel_size - 0.5).astype(np.float32).reshape(h, w)
-    map_y = ((grid.y0 - gy) / grid.pixel_size - 0.5).astype(np.float32).reshape(h, w)
-    map_x[~hit.reshape(h, w)] = 0.0
-    map_y[~hit.reshape(h, w)] = 0.0
-    fp_cells = footprint_m(rng_m, rays[:, 2], ifov_rad).reshape(h, w) / grid.pixel_size
+    inv = 1.0 / grid.pixel_size
+    map_x = ((pose.position_m[0] + t * dx - grid.x0) * inv - 0.5).astype(np.float32)
+    map_y = ((grid.y0 - pose.position_m[1] - t * dy) * inv - 0.5).astype(np.float32)
     # the pixel's box footprint matches a Gaussian of sigma ~ 0.4 footprint
-    want = 0.4 * fp_cells
+    want = (0.4 * inv) * footprint_m(t, dz, ifov_rad)
     sig = np.asarray(BLUR_SIGMAS_CELLS)
-    level = np.abs(want[..., None] - sig).argmin(axis=-1)
-    out = np.empty((h, w), np.float32)
+    level = np.digitize(want, 0.5 * (sig[1:] + sig[:-1]))
+    out = np.empty(map_x.shape, np.float32)
     for k in np.unique(level):
         sample = cv2.remap(rgrid.levels[k], map_x, map_y, cv2.INTER_LINEAR,
                            borderMode=cv2.BORDER_REPLICATE)
+        if k == level.min() and k == level.max():
+            out = sample
+            break
         sel = level == k
         out[sel] = sample[sel]
-    out[~hit.reshape(h, w)] = rgrid.sky_radiance
-    return out, rng_m.reshape(h, w).astype(np.float32)
+    out[~hit] = rgrid.sky_radiance
+    return out, t.astype(np.float32)
 
 
 def at_camera_radiance(surface_radiance: np.ndarray, range_m: np.ndarray, atmos: Atmosphere,

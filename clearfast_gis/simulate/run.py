@@ -37,6 +37,7 @@ from clearfast_gis.simulate.detector import make_detector
 from clearfast_gis.simulate.mission import plan_for
 from clearfast_gis.simulate.objects import SceneObject, draw_objects
 from clearfast_gis.simulate.platform import gnss_epochs, lift_motion
+from clearfast_gis.simulate.rays import FrameRays
 from clearfast_gis.simulate.render import (
     Atmosphere,
     at_camera_radiance,
@@ -268,6 +269,7 @@ def simulate_survey(out_dir: str | Path, config: SimConfig, seed: int = 0, drift
     fields_ = build_scene(grid, objs, origin, stream(seed, "scene"))
     rows_a, cols_a, area_grid = area_window(grid, config, origin)
     tables = [BandTable(b.lambda_min_um, b.lambda_max_um) for b in config.bands]
+    frame_rays = [FrameRays(camera, b.shift_px) for b in config.bands]
     emis = [emissivity_map(fields_, b.lambda_min_um, b.lambda_max_um) for b in config.bands]
     det_rng = stream(seed, "detector")
     detectors = [make_detector(tb, (h_px, w_px), config.bit_depth, config.netd_k, start_s,
@@ -333,8 +335,7 @@ def simulate_survey(out_dir: str | Path, config: SimConfig, seed: int = 0, drift
                      + b * config.band_interval_s)
                 pose = pose_from_ptu(motion.antenna_m(t)[0], pos["pan_deg"], pos["tilt_deg"],
                                      platform, motion.attitude_rpy_deg(t)[0])
-                l_s, rng_m = surface_radiance_frame(camera, pose, rgrids[b], ifov,
-                                                    config.bands[b].shift_px)
+                l_s, rng_m = surface_radiance_frame(frame_rays[b], pose, rgrids[b], ifov)
                 atm = Atmosphere(float(np.interp(t, t_min, air_min)),
                                  float(np.interp(t, t_min, fm["rh_pct"])),
                                  float(np.interp(t, t_min, pressure)))

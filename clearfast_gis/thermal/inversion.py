@@ -53,10 +53,11 @@ class Inversion:
     log10_alpha_sigma : float
         Uncertainty of log10 alpha (the fit's own parameter).
     status : str
-        ``ok``; ``at_bound`` (depth at the deepest node or diffusivity at either end of the
-        table); ``weak_contrast`` (peak modelled contrast < 3 noise sigma);
-        ``not_characterised`` (depth sigma > 2 cm, log10 alpha sigma > 0.5, a rival optimum
-        at another depth within delta chi-square 4, or the misfit > 3 noise sigma).
+        First that applies: ``weak_contrast`` (peak modelled contrast < 3 noise sigma);
+        ``not_characterised`` when the misfit exceeds 3 noise sigma; ``at_bound`` (depth
+        at the deepest node or diffusivity at either end of the table);
+        ``not_characterised`` (depth sigma > 2 cm, log10 alpha sigma > 0.5 or a rival
+        optimum at another depth within delta chi-square 4); else ``ok``.
     residual_rms_k : float
         Root-mean-square misfit, K.
     noise_k : float
@@ -196,12 +197,14 @@ def invert_anomaly(
     rivals = [f for f in fits[1:]
               if 2 * (f.cost - best.cost) / s2 < AMBIGUITY_DCHI2
               and abs(f.x[0] - d) > max(2 * sig[0], 0.005)]
+    misfit = noise_k is not None and rms > MAX_MISFIT_RATIO * noise
     if peak < MIN_CONTRAST_SNR * noise:
         status = "weak_contrast"
+    elif misfit:
+        status = "not_characterised"
     elif d >= depths[-1] - tol_d or lalpha <= la[0] + tol_a or lalpha >= la[-1] - tol_a:
         status = "at_bound"
-    elif (sig[0] > MAX_DEPTH_SIGMA_M or sig[1] > MAX_LOG10_ALPHA_SIGMA or rivals
-          or (noise_k is not None and rms > MAX_MISFIT_RATIO * noise)):
+    elif sig[0] > MAX_DEPTH_SIGMA_M or sig[1] > MAX_LOG10_ALPHA_SIGMA or rivals:
         status = "not_characterised"
     else:
         status = "ok"

@@ -59,25 +59,25 @@ class ToolkitAlgorithm(QgsProcessingAlgorithm):
     def name(self):
         return self.NAME
 
-    def displayName(self):  # noqa: N802 (QGIS's name)
+    def displayName(self):
         return self.TITLE
 
     def group(self):
         return "Survey processing"
 
-    def groupId(self):  # noqa: N802 (QGIS's name)
+    def groupId(self):
         return "survey"
 
     def icon(self):
         return QIcon(ICON_PATH)
 
-    def shortHelpString(self):  # noqa: N802 (QGIS's name)
+    def shortHelpString(self):
         return self.HELP + "\n\nRuns the clearfast toolkit's command line (`clearfast`)."
 
-    def createInstance(self):  # noqa: N802 (QGIS's name)
+    def createInstance(self):
         return type(self)()
 
-    def canExecute(self):  # noqa: N802 (QGIS's name)
+    def canExecute(self):
         return toolkit_available()
 
     def run_cli(self, args, feedback):
@@ -135,13 +135,13 @@ class ProcessSurveyAlgorithm(ToolkitAlgorithm):
     HELP = ("Run the whole chain on a survey folder: calibration, mosaics, anomaly detection, "
             "depth and diffusivity estimation. Writes a products folder and loads its layers.")
 
-    def initAlgorithm(self, config=None):  # noqa: N802 (QGIS's name)
+    def initAlgorithm(self, config=None):
         self.addParameter(QgsProcessingParameterFile(
             "SURVEY", "Survey folder", behavior=QgsProcessingParameterFile.Folder))
         self.addParameter(QgsProcessingParameterFolderDestination("OUTPUT", "Products folder"))
         self.add_product_outputs()
 
-    def processAlgorithm(self, parameters, context, feedback):  # noqa: N802 (QGIS's name)
+    def processAlgorithm(self, parameters, context, feedback):
         survey = self.parameterAsFile(parameters, "SURVEY", context)
         out = self.parameterAsString(parameters, "OUTPUT", context)
         self.check(self.run_cli(["process", survey, "-o", out, "--progress", "json"], feedback))
@@ -157,7 +157,7 @@ class RerunDetectionAlgorithm(ToolkitAlgorithm):
             "l: minimum number of scans a blob must appear in (empty = half the scans), gamma: "
             "occurrence threshold of the combined hot/cold maps (empty = toolkit default).")
 
-    def initAlgorithm(self, config=None):  # noqa: N802 (QGIS's name)
+    def initAlgorithm(self, config=None):
         self.addParameter(QgsProcessingParameterFile(
             "PRODUCTS", "Products folder", behavior=QgsProcessingParameterFile.Folder))
         self.addParameter(QgsProcessingParameterNumber(
@@ -177,7 +177,7 @@ class RerunDetectionAlgorithm(ToolkitAlgorithm):
             None, optional=True, minValue=0.0))
         self.add_product_outputs()
 
-    def checkParameterValues(self, parameters, context):  # noqa: N802 (QGIS's name)
+    def checkParameterValues(self, parameters, context):
         ok, message = super().checkParameterValues(parameters, context)
         if ok:
             d1 = self.parameterAsDouble(parameters, "D1", context)
@@ -186,7 +186,7 @@ class RerunDetectionAlgorithm(ToolkitAlgorithm):
                 return False, "D2 must be smaller than D1 (otherwise every object is removed)"
         return ok, message
 
-    def processAlgorithm(self, parameters, context, feedback):  # noqa: N802 (QGIS's name)
+    def processAlgorithm(self, parameters, context, feedback):
         folder = self.parameterAsFile(parameters, "PRODUCTS", context)
         args = ["detect", folder,
                 "--d1", repr(self.parameterAsDouble(parameters, "D1", context)),
@@ -208,7 +208,7 @@ class ExportMineActionAlgorithm(ToolkitAlgorithm):
             "confidence, depth, diameter, class cue, GNSS fix, status). Every point is an "
             "indication, never a confirmed hazardous area.")
 
-    def initAlgorithm(self, config=None):  # noqa: N802 (QGIS's name)
+    def initAlgorithm(self, config=None):
         self.addParameter(QgsProcessingParameterFile(
             "PRODUCTS", "Products folder", behavior=QgsProcessingParameterFile.Folder))
         self.addParameter(QgsProcessingParameterFolderDestination("OUTPUT", "Output folder"))
@@ -217,7 +217,7 @@ class ExportMineActionAlgorithm(ToolkitAlgorithm):
         self.addOutput(QgsProcessingOutputFile("CSV", "Mine action CSV"))
         self.addOutput(QgsProcessingOutputNumber("COUNT", "Number of indications"))
 
-    def processAlgorithm(self, parameters, context, feedback):  # noqa: N802 (QGIS's name)
+    def processAlgorithm(self, parameters, context, feedback):
         folder = self.parameterAsFile(parameters, "PRODUCTS", context)
         out = self.parameterAsString(parameters, "OUTPUT", context)
         result = self.check(self.run_cli(
@@ -238,7 +238,7 @@ class ValidateSurveyAlgorithm(ToolkitAlgorithm):
     HELP = ("Check a survey folder completely (manifest, frames, logs, markers) and report every "
             "problem. Writes the toolkit's JSON report when an output file is given.")
 
-    def initAlgorithm(self, config=None):  # noqa: N802 (QGIS's name)
+    def initAlgorithm(self, config=None):
         self.addParameter(QgsProcessingParameterFile(
             "SURVEY", "Survey folder", behavior=QgsProcessingParameterFile.Folder))
         self.addParameter(QgsProcessingParameterFileDestination(
@@ -247,7 +247,7 @@ class ValidateSurveyAlgorithm(ToolkitAlgorithm):
         self.addOutput(QgsProcessingOutputVectorLayer(
             "MARKERS", "Survey markers", QgsProcessing.TypeVectorPoint))
 
-    def processAlgorithm(self, parameters, context, feedback):  # noqa: N802 (QGIS's name)
+    def processAlgorithm(self, parameters, context, feedback):
         survey = self.parameterAsFile(parameters, "SURVEY", context)
         report = self.parameterAsFileOutput(parameters, "REPORT", context)
         result = self.run_cli(["validate", survey, "--json"], feedback)

@@ -94,7 +94,7 @@ def parse_utc(text: str) -> QDateTime:
     s = text.strip().replace("Z", "+00:00")
     dt = datetime.fromisoformat(s)
     if dt.tzinfo is None:
-        dt = dt.replace(tzinfo=timezone.utc)
+        dt = dt.replace(tzinfo=timezone.utc)  # noqa: UP017 (QGIS 3.22 may run Python 3.9)
     ms = round(dt.timestamp() * 1000)
     return QDateTime.fromMSecsSinceEpoch(ms, Qt.UTC)
 
@@ -179,7 +179,7 @@ def _suspect_form(layer: QgsVectorLayer, folder: str) -> None:
 def _temporal_ranges(times: list[QDateTime]) -> list[QgsDateTimeRange]:
     """[t_k, t_k+1) for each scan; the last lasts the median scan interval (or one hour)."""
     secs = [t.toMSecsSinceEpoch() / 1000.0 for t in times]
-    gaps = sorted(b - a for a, b in zip(secs, secs[1:], strict=False) if b > a)
+    gaps = sorted(secs[k + 1] - secs[k] for k in range(len(secs) - 1) if secs[k + 1] > secs[k])
     step = gaps[len(gaps) // 2] if gaps else 3600.0
     ranges = []
     for k, t in enumerate(times):
@@ -234,9 +234,9 @@ def load_products(folder: str, project: QgsProject | None = None, canvas=None) -
     lo, hi = shared_range(mosaics) if mosaics else (float("nan"), float("nan"))
     for layer in mosaics:
         layer.setRenderer(thermal_renderer(layer, lo, hi))
-    timed = [(layer, t) for layer, t in zip(mosaics, times, strict=True) if t is not None]
+    timed = [(mosaics[k], times[k]) for k in range(len(mosaics)) if times[k] is not None]
     ranges = _temporal_ranges([t for _, t in timed]) if timed else []
-    for (layer, _), rng in zip(timed, ranges, strict=True):
+    for (layer, _), rng in zip(timed, ranges):  # noqa: B905 (Python 3.9 in QGIS 3.22)
         props = layer.temporalProperties()
         props.setMode(QgsRasterLayerTemporalProperties.ModeFixedTemporalRange)
         props.setFixedTemporalRange(rng)
@@ -277,8 +277,8 @@ def load_products(folder: str, project: QgsProject | None = None, canvas=None) -
     extent = QgsRectangle(extent_layer.extent())
     extent.scale(1.05)
     if canvas is not None:
-        transform = QgsCoordinateTransform(extent_layer.crs(), canvas.mapSettings().destinationCrs(),
-                                           project)
+        destination = canvas.mapSettings().destinationCrs()
+        transform = QgsCoordinateTransform(extent_layer.crs(), destination, project)
         canvas.setExtent(transform.transformBoundingBox(extent))
         canvas.refresh()
     return LoadedProducts(folder, survey_id, group, mosaics, vectors,

@@ -23,12 +23,12 @@ class ClearfastPlugin:
         self.provider = None
         self.actions: list[QAction] = []
 
-    def initProcessing(self):  # noqa: N802 (QGIS's name)
+    def initProcessing(self):
         if self.provider is None:
             self.provider = ClearfastProvider()
             QgsApplication.processingRegistry().addProvider(self.provider)
 
-    def initGui(self):  # noqa: N802 (QGIS's name)
+    def initGui(self):
         self.initProcessing()
         if self.iface is None:
             return

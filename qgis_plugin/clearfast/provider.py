@@ -26,16 +26,16 @@ class ClearfastProvider(QgsProcessingProvider):
     def name(self):
         return "CLEARFAST"
 
-    def longName(self):  # noqa: N802 (QGIS's name)
+    def longName(self):
         return "CLEARFAST stand-off thermal-IR minefield survey"
 
     def icon(self):
         return QIcon(ICON_PATH)
 
-    def svgIconPath(self):  # noqa: N802 (QGIS's name)
+    def svgIconPath(self):
         return ICON_PATH
 
-    def loadAlgorithms(self):  # noqa: N802 (QGIS's name)
+    def loadAlgorithms(self):
         for cls in (ProcessSurveyAlgorithm, RerunDetectionAlgorithm, ExportMineActionAlgorithm,
                     ValidateSurveyAlgorithm):
             self.addAlgorithm(cls())

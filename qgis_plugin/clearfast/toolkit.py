@@ -148,7 +148,7 @@ def handle_line(line: str, feedback, events: list) -> None:
     if event == "start":
         feedback.setProgressText(f"{obj.get('stage', '')}")
         feedback.pushInfo(f"{obj.get('stage', '')}: {obj.get('total', '?')} steps")
-    if event in ("start", "progress", "end") and isinstance(obj.get("fraction"), int | float):
+    if event in ("start", "progress", "end") and isinstance(obj.get("fraction"), (int, float)):
         feedback.setProgress(max(0.0, min(100.0, 100.0 * float(obj["fraction"]))))
     elif event == "message":
         feedback.pushInfo(str(obj.get("message", "")))

@@ -99,8 +99,9 @@ def test_equiangular_eq6_worked_example():
     x, y = x.ravel(), y.ravel()
     gamma = np.arctan((y - 0.0) / (x - 0.0))
     alpha, n, h = math.radians(10.0), 101, 10.0
-    u_paper = (np.arctan(h * np.sin(gamma) / y) - (math.radians(40) - alpha)) / (2 * alpha / (n - 1))
-    v_paper = (gamma - (math.radians(30) - alpha)) / (2 * alpha / (n - 1))
+    ifov = 2 * alpha / (n - 1)
+    u_paper = (np.arctan(h * np.sin(gamma) / y) - (math.radians(40) - alpha)) / ifov
+    v_paper = (gamma - (math.radians(30) - alpha)) / ifov
     uv = cam.project(np.column_stack([y, x, np.zeros_like(x)]), pose)
     np.testing.assert_allclose(uv[:, 0], v_paper, atol=1e-9)
     np.testing.assert_allclose(uv[:, 1], u_paper, atol=1e-9)

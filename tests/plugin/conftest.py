@@ -13,7 +13,7 @@ from pathlib import Path
 
 os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
 
-import pytest  # noqa: E402
+import pytest
 
 REPO = Path(__file__).resolve().parents[2]
 PLUGIN_DIR = REPO / "qgis_plugin"
@@ -68,5 +68,6 @@ def fake_toolkit(monkeypatch):
 @pytest.fixture()
 def real_toolkit(monkeypatch):
     """Point the plugin at this checkout's toolkit (``python -m clearfast_gis.cli.main``)."""
-    monkeypatch.setenv("CLEARFAST_COMMAND", shlex.join([sys.executable, "-m", "clearfast_gis.cli.main"]))
+    monkeypatch.setenv("CLEARFAST_COMMAND",
+                       shlex.join([sys.executable, "-m", "clearfast_gis.cli.main"]))
     monkeypatch.setenv("PYTHONPATH", str(REPO))

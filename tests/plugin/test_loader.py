@@ -219,26 +219,25 @@ class FakeIface:
     def __init__(self):
         self.menu, self.toolbar = [], []
 
-    def mainWindow(self):  # noqa: N802 (QGIS's name)
+    def mainWindow(self):
         return None
 
-    def addPluginToMenu(self, menu, action):  # noqa: N802
+    def addPluginToMenu(self, menu, action):
         self.menu.append((menu, action))
 
-    def removePluginMenu(self, menu, action):  # noqa: N802
+    def removePluginMenu(self, menu, action):
         self.menu.remove((menu, action))
 
-    def addToolBarIcon(self, action):  # noqa: N802
+    def addToolBarIcon(self, action):
         self.toolbar.append(action)
 
-    def removeToolBarIcon(self, action):  # noqa: N802
+    def removeToolBarIcon(self, action):
         self.toolbar.remove(action)
 
 
 def test_plugin_gui_unload_removes_everything(session_plugin):
-    from qgis.core import QgsApplication
-
     import clearfast
+    from qgis.core import QgsApplication
 
     registry = QgsApplication.processingRegistry()
     before = len(registry.providers())

@@ -1,0 +1,226 @@
+"""Anomalies on the temporal stack of mosaics: detect, measure, characterise, classify."""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from clearfast_gis.detection import blob_features, classify, detect_anomalies
+from clearfast_gis.detection.features import AnomalyFeatures
+from clearfast_gis.progress import NULL_PROGRESS, Progress
+from clearfast_gis.thermal import (
+    Inversion,
+    build_site_table,
+    fit_soil_diffusivity,
+    fit_surface_parameters,
+    get_soil,
+    invert_anomaly,
+)
+from clearfast_gis.thermal.forcing import Forcing
+from clearfast_gis.timeutil import format_utc
+from clearfast_gis.units import ZERO_CELSIUS_K
+
+
+@dataclass
+class AnomalySet:
+    """Detected anomalies of a survey.
+
+    Attributes
+    ----------
+    labels : int32 (H, W)
+        Anomaly label per mosaic cell (0 = background), ids matching ``features``.
+    features : list of AnomalyFeatures
+        Highest score first, at most ``max_anomalies``.
+    inversions : dict[int, Inversion]
+        Thermal characterisation per anomaly id (missing when not attempted).
+    soil_alpha_m2s, soil_alpha_sigma_m2s : float
+        Soil diffusivity from the thermocouples.
+    notes : list of str
+        What the characterisation had to skip, and why.
+    """
+
+    labels: np.ndarray
+    features: list[AnomalyFeatures]
+    inversions: dict[int, Inversion]
+    soil_alpha_m2s: float = math.nan
+    soil_alpha_sigma_m2s: float = math.nan
+    notes: list[str] = dataclasses.field(default_factory=list)
+
+
+def disk_px(size_m: float, pixel_size_m: float, minimum: int = 3) -> int:
+    """A structuring-element diameter in metres as an odd number of pixels (>= minimum)."""
+    n = max(minimum, int(round(size_m / pixel_size_m)))
+    return n if n % 2 == 1 else n + 1
+
+
+def detect_on_mosaics(stack_c: np.ndarray, times_s: np.ndarray, transform, pixel_size_m: float,
+                      longitude_deg: float, d1_m: float, d2_m: float, epsilon: float,
+                      level: int | None, gamma: float | None, max_anomalies: int,
+                      progress: Progress = NULL_PROGRESS) -> tuple[np.ndarray, list]:
+    """The morphological detector on mosaics, and blob features.
+
+    Parameters
+    ----------
+    stack_c : float32 (N, B, H, W)
+        Co-registered mosaics, degrees C, NaN = no data.
+    times_s : float64 (N,)
+        Scan times, UTC epoch seconds.
+    transform : affine.Affine
+        Mosaic grid transform.
+    pixel_size_m : float
+        Mosaic cell size, metres.
+    longitude_deg : float
+        Site longitude (local solar time for the polarity).
+    d1_m, d2_m, epsilon, level, gamma : detector parameters (paper §4), sizes in metres.
+    max_anomalies : int
+        Keep the highest-scoring ones.
+
+    Returns
+    -------
+    labels : int32 (H, W)
+        Relabelled 1..K in the order of ``features``.
+    features : list of AnomalyFeatures
+    """
+    det = detect_anomalies(stack_c, disk_px(d1_m, pixel_size_m), disk_px(d2_m, pixel_size_m),
+                           epsilon=epsilon, level=level, gamma=gamma, progress=progress)
+    feats = blob_features(det.labels, stack_c, times_s=times_s, transform=transform,
+                          pixel_size_m=pixel_size_m, detection=det, longitude_deg=longitude_deg)
+    feats = sorted(feats, key=lambda f: (-f.score, f.id))[:max_anomalies]
+    labels = np.zeros(det.labels.shape, dtype=np.int32)
+    renumbered = []
+    for new_id, f in enumerate(feats, start=1):
+        labels[det.labels == f.id] = new_id
+        renumbered.append(dataclasses.replace(f, id=new_id))
+    return labels, renumbered
+
+
+def _band0(series: np.ndarray) -> np.ndarray:
+    s = np.asarray(series, dtype=np.float64)
+    return s[:, 0] if s.ndim == 2 else s
+
+
+def site_soil(soil_log, forcing: Forcing, times_s: np.ndarray, background_c: np.ndarray):
+    """The site's soil: diffusivity from the thermocouples, surface terms from the background.
+
+    Returns
+    -------
+    soil : Soil
+    alpha_m2s, sigma_m2s : float
+        Fitted soil diffusivity and its 1-sigma uncertainty.
+    """
+    alpha, sigma = fit_soil_diffusivity(soil_log)
+    base = get_soil("moist_sand" if alpha > 4e-7 else "dry_sand")
+    soil = dataclasses.replace(base, k_wmk=alpha * base.rho_c_jm3k)
+    ok = np.isfinite(background_c)
+    if ok.sum() >= 4:
+        soil, _ = fit_surface_parameters(soil, forcing, times_s[ok],
+                                         background_c[ok] + ZERO_CELSIUS_K)
+    return soil, alpha, sigma
+
+
+def radius_nodes(radii_m: np.ndarray, max_nodes: int = 3) -> np.ndarray:
+    """A few object radii (m) spanning the anomalies', for the site table."""
+    r = np.clip(np.asarray(radii_m, dtype=float), 0.02, 0.25)
+    if r.size == 0:
+        return np.array([0.05])
+    q = np.unique(np.round(np.quantile(r, np.linspace(0, 1, max_nodes)), 2))
+    return q
+
+
+def characterise(features: list[AnomalyFeatures], times_s: np.ndarray, forcing: Forcing,
+                 soil, progress: Progress = NULL_PROGRESS) -> dict[int, Inversion]:
+    """Depth and diffusivity of each anomaly with the thermal model (one site table).
+
+    Parameters
+    ----------
+    features : list of AnomalyFeatures
+        With ``centre_k`` and ``ring_k`` series in degrees C (mosaic units).
+    times_s : float64 (N,)
+        Scan times.
+    forcing : Forcing
+    soil : Soil
+        The site's fitted soil.
+
+    Returns
+    -------
+    dict[int, Inversion]
+    """
+    if not features:
+        return {}
+    radii = np.array([0.5 * f.diameter_m for f in features])
+    nodes = radius_nodes(radii)
+    progress.message(f"thermal model table for radii {', '.join(f'{r:.2f}' for r in nodes)} m")
+    table = build_site_table(forcing, soil, nodes if nodes.size > 1 else float(nodes[0]),
+                             times_s)
+    out: dict[int, Inversion] = {}
+    progress.start("characterise", len(features))
+    for f, r in zip(features, radii, strict=True):
+        centre = _band0(f.centre_k) + ZERO_CELSIUS_K
+        ring = _band0(f.ring_k) + ZERO_CELSIUS_K
+        r_tab = float(np.clip(r, nodes.min(), nodes.max()))
+        if np.isfinite(centre).sum() >= 4:
+            out[f.id] = invert_anomaly(times_s, centre, ring, forcing, soil, r_tab, table=table)
+        progress.advance()
+    progress.close()
+    return out
+
+
+def _day_night_contrast(times_s: np.ndarray, contrast: np.ndarray, longitude_deg: float
+                        ) -> tuple[float, float]:
+    hour = (times_s / 3600.0 + longitude_deg / 15.0) % 24.0
+    day = (hour >= 10) & (hour <= 16)
+    night = (hour >= 22) | (hour <= 5)
+    c = _band0(contrast)
+
+    def pick(sel):
+        v = c[sel & np.isfinite(c)]
+        return float(v[np.argmax(np.abs(v))]) if v.size else math.nan
+
+    return pick(day), pick(night)
+
+
+def _daytime_sign(behaviour: str, contrast_day_k: float, contrast_k: np.ndarray) -> str:
+    """``hot``/``cold``: the sign of the daytime contrast (schemas/anomaly.schema.json)."""
+    if behaviour in ("warm_day_cool_night", "warm"):
+        return "hot"
+    if behaviour == "cool":
+        return "cold"
+    if math.isfinite(contrast_day_k):
+        return "hot" if contrast_day_k >= 0 else "cold"
+    mean = float(np.nanmean(_band0(contrast_k))) if np.isfinite(_band0(contrast_k)).any() else 0
+    return "hot" if mean >= 0 else "cold"
+
+
+def suspect_records(anomalies: AnomalySet, times_s: np.ndarray, longitude_deg: float,
+                    fix_quality: int | None, survey_code: str) -> list[dict]:
+    """Attribute records of the ``suspects`` layer (schemas/anomaly.schema.json)."""
+    from clearfast_gis.report.html import figure_name
+
+    records = []
+    for f in anomalies.features:
+        inv = anomalies.inversions.get(f.id)
+        cue, conf = classify(f, inv)
+        aid = f"{survey_code}-{f.id:04d}"
+        day, night = _day_night_contrast(times_s, f.contrast_k, longitude_deg)
+        rec = {
+            "anomaly_id": aid, "x": float(f.x), "y": float(f.y),
+            "area_m2": float(f.area_m2), "diameter_m": float(f.diameter_m),
+            "circularity": float(f.circularity),
+            "depth_m": inv.depth_m if inv else None,
+            "depth_sigma_m": inv.depth_sigma_m if inv else None,
+            "diffusivity_m2s": inv.alpha_m2s if inv else None,
+            "diffusivity_sigma_m2s": inv.alpha_sigma_m2s if inv else None,
+            "status": inv.status if inv else "not_characterised",
+            "polarity": _daytime_sign(f.polarity, day, f.contrast_k),
+            "diurnal_behaviour": f.polarity, "class_cue": cue, "confidence": float(conf),
+            "n_scans": int(f.n_scans), "contrast_day_k": day, "contrast_night_k": night,
+            "fix_quality": fix_quality, "figure": figure_name(aid),
+            "contrast_series": {"time_utc": [format_utc(t) for t in times_s],
+                                "contrast_k": [float(v) for v in _band0(f.contrast_k)]},
+            "score": float(f.score),
+        }
+        records.append(rec)
+    return records

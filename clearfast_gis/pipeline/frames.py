@@ -1,0 +1,182 @@
+"""From a survey's raw frames to apparent-temperature frames with their poses.
+
+Glue between the survey reader, the geometry (pose per frame, path length per pixel) and the
+radiometry (two-blackbody calibration, atmosphere, apparent temperature).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator, Sequence
+from dataclasses import dataclass
+
+import cv2
+import numpy as np
+
+from clearfast_gis.errors import InvalidInput
+from clearfast_gis.geometry.gnss import PlatformTrack
+from clearfast_gis.geometry.pose import CameraPose, pose_from_ptu
+from clearfast_gis.mosaic import FrameInput
+from clearfast_gis.radiometry.calibration import CalibrationEvent
+from clearfast_gis.radiometry.stage import (
+    AirState,
+    apparent_temperature_frames,
+    band_table,
+    has_transmittance_model,
+)
+from clearfast_gis.registration import ConformalTransform, warp_conformal
+from clearfast_gis.units import ZERO_CELSIUS_K
+
+
+@dataclass
+class SurveyContext:
+    """What every scan of one survey needs, read once.
+
+    Attributes
+    ----------
+    survey : clearfast_gis.survey.Survey
+    camera : camera model
+    track : PlatformTrack
+        Antenna positions in the survey CRS.
+    events : list of CalibrationEvent
+    weather : clearfast_gis.survey.WeatherLog
+    band_offsets : list of ConformalTransform
+        Band b to band 0 alignment (maps band-0 pixels to band-b pixels).
+    """
+
+    survey: object
+    camera: object
+    track: PlatformTrack
+    events: list[CalibrationEvent]
+    weather: object
+    band_offsets: list[ConformalTransform]
+
+
+def frame_pose(ctx: SurveyContext, time_s: float, pan_deg: float, tilt_deg: float) -> CameraPose:
+    """Geometric pose of a frame: RTK position at the frame time, pan/tilt, mount."""
+    antenna = ctx.track.at(np.array([time_s]))[0]
+    return pose_from_ptu(antenna, pan_deg, tilt_deg, ctx.survey.manifest["platform"])
+
+
+def path_length_map(camera, pose: CameraPose, lattice: int = 17) -> np.ndarray:
+    """Camera-to-ground distance per pixel (m), float32 (H, W), from a coarse lattice.
+
+    The slant range varies smoothly over a frame, so it is computed exactly on a
+    ``lattice x lattice`` grid of pixels and interpolated bilinearly. Pixels that see the sky
+    get the largest range of the frame.
+    """
+    w, h = camera.width, camera.height
+    us = np.linspace(0, w - 1, lattice)
+    vs = np.linspace(0, h - 1, lattice)
+    uu, vv = np.meshgrid(us, vs)
+    g = camera.ground_points(uu.ravel(), vv.ravel(), pose)
+    d = np.linalg.norm(g - pose.position_m[None, :], axis=1)
+    d = np.where(np.isfinite(d), d, np.nan)
+    fill = np.nanmax(d) if np.isfinite(d).any() else 20.0
+    d = np.where(np.isfinite(d), d, fill).reshape(lattice, lattice).astype(np.float32)
+    return cv2.resize(d, (w, h), interpolation=cv2.INTER_LINEAR)
+
+
+def scan_frames(ctx: SurveyContext, scan: int, air_at, atmosphere: bool = True,
+                chunk: int = 32) -> Iterator[FrameInput]:
+    """Apparent-temperature frames of one scan, in scan-pattern order.
+
+    Parameters
+    ----------
+    ctx : SurveyContext
+    scan : int
+    air_at : callable
+        ``air_at(time_s (N,)) -> AirState`` (weather interpolated at frame times).
+    atmosphere : bool
+        Apply the atmospheric correction.
+    chunk : int
+        Positions calibrated at a time (bounds memory for large frames).
+
+    Yields
+    ------
+    FrameInput
+        values: float32 (B, H, W) degrees C, bands aligned to band 0.
+    """
+    survey = ctx.survey
+    n_bands = len(survey.bands)
+    fr = survey.frames
+    rows0 = survey.scan_rows(scan, 0)
+    positions = fr.position[rows0]
+    common = set(positions.tolist())
+    rows_by_band = [rows0]
+    for b in range(1, n_bands):
+        rb = survey.scan_rows(scan, b)
+        common &= set(fr.position[rb].tolist())
+        rows_by_band.append(rb)
+    keep = np.array(sorted(common), dtype=np.int64)
+    if keep.size == 0:
+        return
+    sel = [r[np.isin(fr.position[r], keep)] for r in rows_by_band]
+    poses = [frame_pose(ctx, fr.time_s[i], fr.pan_deg[i], fr.tilt_deg[i]) for i in sel[0]]
+    raw_all = [survey.read_scan(scan, b) for b in range(n_bands)]
+    pos_all = [fr.position[survey.scan_rows(scan, b)] for b in range(n_bands)]
+    for start in range(0, keep.size, chunk):
+        idx = slice(start, min(start + chunk, keep.size))
+        block_pos = keep[idx]
+        block_poses = poses[idx]
+        paths = np.stack([path_length_map(ctx.camera, p) for p in block_poses])
+        temps = []
+        for b in range(n_bands):
+            order = np.searchsorted(pos_all[b], block_pos)
+            if np.any(pos_all[b][order] != block_pos):
+                raise InvalidInput("positions differ between bands", survey.label("frames"),
+                                   f"scan {scan}")
+            raw = np.asarray(raw_all[b][order])
+            times = fr.time_s[sel[b][idx]]
+            band = survey.bands[b]
+            table = band_table(band.lambda_min_um, band.lambda_max_um)
+            use_atm = atmosphere and has_transmittance_model(band.lambda_min_um,
+                                                             band.lambda_max_um)
+            air: AirState = air_at(times)
+            t_k = apparent_temperature_frames(raw, times, b, table, ctx.events, air,
+                                              path_length_m=paths, atmosphere=use_atm)
+            t_c = t_k - np.float32(ZERO_CELSIUS_K)
+            if b > 0 and not _is_identity(ctx.band_offsets[b]):
+                t_c = np.stack([warp_conformal(f, ctx.band_offsets[b], f.shape) for f in t_c])
+            temps.append(t_c.astype(np.float32))
+        stack = np.stack(temps, axis=1)  # (P, B, H, W)
+        for k, (pos, pose) in enumerate(zip(block_pos, block_poses, strict=True)):
+            yield FrameInput(int(pos), stack[k], pose)
+
+
+def _is_identity(t: ConformalTransform) -> bool:
+    return abs(t.tx_px) < 1e-6 and abs(t.ty_px) < 1e-6 and abs(t.angle_rad) < 1e-9 \
+        and abs(t.scale - 1.0) < 1e-9
+
+
+def scan_times(survey, scan: int) -> tuple[float, float]:
+    """(start, mean) time of a scan's frames, UTC epoch seconds."""
+    t = survey.frames.time_s[survey.frames.scan == scan]
+    return float(t.min()), float(t.mean())
+
+
+def first_scan_band_frames(ctx_partial, scan: int, air_at, max_frames: int = 24
+                           ) -> Sequence[np.ndarray]:
+    """Per-band apparent-temperature stacks of (up to) ``max_frames`` positions of a scan,
+    unaligned, for estimating the filter-wheel band offsets."""
+    survey = ctx_partial.survey
+    fr = survey.frames
+    n_bands = len(survey.bands)
+    rows = [survey.scan_rows(scan, b) for b in range(n_bands)]
+    common = set(fr.position[rows[0]].tolist())
+    for r in rows[1:]:
+        common &= set(fr.position[r].tolist())
+    pick = np.array(sorted(common), dtype=np.int64)
+    if pick.size > max_frames:
+        pick = pick[np.linspace(0, pick.size - 1, max_frames).round().astype(int)]
+    out = []
+    for b in range(n_bands):
+        rb = rows[b][np.isin(fr.position[rows[b]], pick)]
+        raw = survey.read_scan(scan, b)
+        order = np.searchsorted(fr.position[survey.scan_rows(scan, b)], pick)
+        band = survey.bands[b]
+        table = band_table(band.lambda_min_um, band.lambda_max_um)
+        times = fr.time_s[rb]
+        t_k = apparent_temperature_frames(np.asarray(raw[order]), times, b, table,
+                                          ctx_partial.events, air_at(times), atmosphere=False)
+        out.append(t_k)
+    return out

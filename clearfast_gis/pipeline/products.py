@@ -1,0 +1,204 @@
+"""Writing the anomaly products: ``anomalies.gpkg``, ``report.html``, ``products.json``."""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import numpy as np
+
+from clearfast_gis import __version__
+from clearfast_gis.timeutil import format_utc
+
+
+def label_outlines(labels: np.ndarray, transform) -> dict[int, object]:
+    """Outline polygon (survey CRS) of every labelled anomaly: id -> shapely geometry."""
+    import rasterio.features
+    import shapely
+    from shapely.geometry import shape
+
+    parts: dict[int, list] = {}
+    mask = labels > 0
+    for geom, value in rasterio.features.shapes(labels.astype(np.int32), mask=mask,
+                                                transform=transform, connectivity=8):
+        parts.setdefault(int(value), []).append(shape(geom))
+    return {k: shapely.unary_union(v) for k, v in parts.items()}
+
+
+def footprint_polygon(valid: np.ndarray, transform, simplify_m: float):
+    """The union of cells with data as one (multi)polygon, simplified by ``simplify_m``."""
+    import rasterio.features
+    import shapely
+    from shapely.geometry import shape
+
+    polys = [shape(g) for g, v in rasterio.features.shapes(
+        valid.astype(np.uint8), mask=valid, transform=transform) if v == 1]
+    if not polys:
+        return shapely.Polygon()
+    return shapely.unary_union(polys).simplify(simplify_m)
+
+
+def _markers_frame(survey, epsg: int):
+    import geopandas as gpd
+
+    from clearfast_gis.geometry.gnss import lonlat_to_crs
+    from clearfast_gis.survey import read_markers
+
+    crs = f"EPSG:{epsg}"
+    if "markers" not in survey.manifest["files"]:
+        return gpd.GeoDataFrame({"marker_id": [], "description": []},
+                                geometry=gpd.GeoSeries([], crs=crs), crs=crs)
+    m = read_markers(survey.path("markers"), survey.label("markers"))
+    x, y = lonlat_to_crs(np.asarray(m.lon_deg), np.asarray(m.lat_deg), epsg)
+    return gpd.GeoDataFrame({"marker_id": [str(i) for i in m.id],
+                             "description": [str(d) for d in m.description]},
+                            geometry=gpd.points_from_xy(x, y), crs=crs)
+
+
+def _pick_day_night(times_s: np.ndarray, lon_deg: float) -> tuple[int, int]:
+    hour = (times_s / 3600.0 + lon_deg / 15.0) % 24.0
+    day = int(np.argmin(np.abs(hour - 13.0)))
+    night = int(np.argmin(np.minimum(np.abs(hour - 3.0), 24 - np.abs(hour - 3.0))))
+    return day, night
+
+
+def write_anomaly_products(products: Path, ctx, survey, anomalies, records: list[dict],
+                           stack: np.ndarray, times_s: np.ndarray, transform, epsg: int,
+                           scan_records: dict[int, dict], report, options, fixq: dict,
+                           timings: dict) -> dict:
+    """Write the GeoPackage, the report and return the products manifest.
+
+    Parameters
+    ----------
+    products : Path
+        Products folder.
+    anomalies : AnomalySet
+    records : list of dict
+        ``suspects`` attribute records, in the order of ``anomalies.features``.
+    stack : float32 (N, B, H, W)
+        Mosaics, degrees C.
+    times_s : float64 (N,)
+        Scan times.
+    transform : affine.Affine
+        Mosaic grid transform.
+    epsg : int
+    scan_records : dict
+        Per-scan records of the run state (time, corrections, residual).
+    report : ValidationReport
+    options : ProcessOptions
+    fixq : dict
+        GNSS fix-quality summary.
+    timings : dict
+        Stage timings so far, seconds.
+    """
+    import geopandas as gpd
+
+    from clearfast_gis.export import default_styles, suspects_frame, write_geopackage
+    from clearfast_gis.report import ReportData, write_report
+    from clearfast_gis.report.figures import contrast_curve_png, mosaic_panel_png
+
+    crs = f"EPSG:{epsg}"
+    pixel = abs(transform.a)
+    outlines = label_outlines(anomalies.labels, transform)
+    suspects = suspects_frame(records, epsg, products / "anomalies.gpkg")
+    ids = [f.id for f in anomalies.features]
+    outline_geoms = [outlines.get(i) for i in ids]
+    anomalies_layer = gpd.GeoDataFrame(
+        suspects.drop(columns="geometry").reset_index(drop=True),
+        geometry=gpd.GeoSeries(outline_geoms, crs=crs), crs=crs)
+    valid = np.any(np.isfinite(stack[:, 0]), axis=0)
+    footprint = gpd.GeoDataFrame(
+        {"survey_id": [survey.manifest["survey_id"]],
+         "area_m2": [float(valid.sum() * pixel * pixel)],
+         "n_scans": [int(stack.shape[0])]},
+        geometry=gpd.GeoSeries([footprint_polygon(valid, transform, 2 * pixel)], crs=crs),
+        crs=crs)
+    layers = {"anomalies": anomalies_layer, "suspects": suspects,
+              "markers": _markers_frame(survey, epsg), "footprint": footprint}
+    write_geopackage(products / "anomalies.gpkg", layers, default_styles())
+
+    # report
+    lon = float(survey.manifest["site"]["longitude_deg"])
+    day, night = _pick_day_night(times_s, lon)
+    colours = {"at_mine": "#e31a1c", "ap_mine": "#e31a1c", "unknown": "#ff7f00",
+               "clutter": "#969696"}
+    outline_xy, labels_txt, cols = [], [], []
+    for rec, geom in zip(records, outline_geoms, strict=True):
+        if geom is None or geom.is_empty:
+            continue
+        g = max(getattr(geom, "geoms", [geom]), key=lambda p: p.area)
+        outline_xy.append(np.asarray(g.exterior.coords))
+        labels_txt.append(rec["anomaly_id"].rsplit("-", 1)[-1])
+        cols.append(colours.get(rec["class_cue"], "#ff7f00"))
+    overview = mosaic_panel_png([stack[day, 0], stack[night, 0]],
+                                [times_s[day], times_s[night]], transform, outline_xy,
+                                labels_txt, cols, epsg)
+    curves = {}
+    for rec, f in zip(records, anomalies.features, strict=True):
+        inv = anomalies.inversions.get(f.id)
+        c = np.asarray(f.contrast_k, dtype=float)
+        c = c[:, 0] if c.ndim == 2 else c
+        model = None if inv is None else np.asarray(inv.model_contrast_k)
+        model_t = None
+        if model is not None and model.shape == times_s.shape:
+            model_t = times_s
+        elif model is not None:
+            model = None
+        title = f"{rec['anomaly_id']}  {rec['class_cue']}  status {rec['status']}"
+        curves[rec["anomaly_id"]] = contrast_curve_png(times_s, c, model_t, model, title)
+    residuals = [r.get("residual_px") for r in scan_records.values()
+                 if r.get("residual_px") is not None]
+    applied = sum(1 for r in scan_records.values() for c in r["corrections"].values()
+                  if c.get("applied"))
+    total = sum(len(r["corrections"]) for r in scan_records.values())
+    warnings = [w.line() for w in report.warnings]
+    if fixq["degraded"]:
+        warnings.append(
+            f"RTK-DGPS not fixed (quality != 4) for {100 * (1 - fixq['rtk_fixed_share']):.1f} "
+            "% of the frames: positions there are degraded")
+    warnings.extend(anomalies.notes)
+    facts = [
+        ("frames", str(len(survey.frames))), ("scans", str(stack.shape[0])),
+        ("positions per scan", str(len(survey.positions))),
+        ("bands", ", ".join(b.name for b in survey.bands)),
+        ("mosaic pixel size", f"{pixel:.3f} m"),
+        ("RTK-fixed share at frame times", f"{100 * fixq['rtk_fixed_share']:.1f} %"),
+        ("frames co-registered (MI)", f"{applied} of {total}"),
+        ("scan-to-reference residual (median / max)",
+         f"{np.median(residuals):.2f} / {np.max(residuals):.2f} px" if residuals else "n/a"),
+        ("seam balancing", "on (temperatures adjusted)" if options.seam_balance else "off"),
+        ("soil diffusivity (thermocouples)",
+         f"{anomalies.soil_alpha_m2s:.2e} ± {anomalies.soil_alpha_sigma_m2s:.1e} m²/s"
+         if math.isfinite(anomalies.soil_alpha_m2s) else "n/a"),
+    ]
+    data = ReportData(survey.manifest["survey_id"], survey.manifest["site"].get("name", ""),
+                      epsg, float(times_s.min()), float(times_s.max()), records, overview,
+                      curves, facts, warnings, dict(timings), options.as_dict())
+    write_report(products, data)
+
+    scans = [{"scan": int(s), "time_utc": format_utc(r["time_s"]),
+              "file": f"mosaics/scan_{int(s):03d}.tif",
+              "residual_px": r.get("residual_px")} for s, r in sorted(scan_records.items())]
+    from clearfast_gis.export.manifest import sha256_file
+
+    inputs = {}
+    for key in ("survey", "mission", "frames", "blackbody_frames", "blackbody_log", "gnss",
+                "weather", "soil"):
+        p = survey.root / "survey.json" if key == "survey" else survey.path(key)
+        inputs[p.relative_to(survey.root).as_posix()] = sha256_file(p)
+    return {
+        "survey_id": survey.manifest["survey_id"],
+        "crs": {"epsg": int(epsg)},
+        "time": {"start_utc": format_utc(float(survey.start_s)),
+                 "end_utc": format_utc(float(survey.end_s))},
+        "software": {"name": "clearfast-gis", "version": __version__},
+        "survey_path": str(Path(survey.root).resolve()),
+        "inputs": inputs,
+        "parameters": options.as_dict(),
+        "bands": [{"name": b.name, "lambda_min_um": b.lambda_min_um,
+                   "lambda_max_um": b.lambda_max_um} for b in survey.bands],
+        "scans": scans,
+        "fix_quality": fixq,
+        "products": {"anomalies": "anomalies.gpkg", "report": "report.html",
+                     "mosaics": "mosaics/"},
+    }

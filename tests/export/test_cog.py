@@ -1,0 +1,116 @@
+"""COG mosaics: round trip, GDAL's COG validation, tags, overviews, errors."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+import rasterio
+from affine import Affine
+from hypothesis import given
+from hypothesis import strategies as st
+
+from clearfast_gis.errors import InvalidInput
+from clearfast_gis.export import band_description, mosaic_name, read_mosaic, write_cog
+from clearfast_gis.export.cog import default_overview_factors
+from clearfast_gis.timeutil import parse_utc
+
+TRANSFORM = Affine(0.05, 0.0, 532780.0, 0.0, -0.05, 3891985.0)
+
+
+@pytest.fixture()
+def bands():
+    rng = np.random.default_rng(1)
+    arr = rng.normal(15.0, 3.0, size=(2, 300, 500)).astype(np.float32)
+    arr[:, :40, :70] = np.nan
+    return arr
+
+
+def test_round_trip_values_crs_tags(tmp_path, bands):
+    path = tmp_path / "mosaics" / mosaic_name(7)
+    t_s = parse_utc("2026-11-15T12:30:00Z")
+    descriptions = [band_description("LW1", 8.0, 9.2), band_description("LW2", 9.2, 10.5)]
+    write_cog(path, bands, TRANSFORM, 32636, descriptions, {"CLEARFAST_SCAN": 7},
+              scan_time_s=t_s)
+    assert path.name == "scan_007.tif"
+    m = read_mosaic(path)
+    np.testing.assert_array_equal(m.bands_c, bands)  # lossless, NaN where NaN
+    assert m.transform == TRANSFORM and m.epsg == 32636
+    assert m.band_descriptions == ("LW1 8.0-9.2 um", "LW2 9.2-10.5 um")
+    assert m.scan_time_s == t_s
+    assert m.tags["CLEARFAST_SCAN_TIME_UTC"] == "2026-11-15T12:30:00Z"
+    assert m.tags["TIFFTAG_DATETIME"] == "2026:11:15 12:30:00"
+    assert m.tags["CLEARFAST_SCAN"] == "7"
+    assert m.overview_factors == (2, 4)
+    with rasterio.open(path) as ds:
+        assert ds.dtypes == ("float32", "float32")
+        assert np.isnan(ds.nodata)
+        assert ds.block_shapes[0] == (256, 256)
+        assert ds.units == ("deg C", "deg C")
+        assert ds.tags(ns="IMAGE_STRUCTURE")["LAYOUT"] == "COG"
+    assert [p.name for p in path.parent.iterdir()] == ["scan_007.tif"]  # no temp left
+
+
+def test_valid_under_gdal_cog_rules(tmp_path, bands):
+    from osgeo_utils.samples.validate_cloud_optimized_geotiff import validate
+
+    path = tmp_path / "scan_000.tif"
+    write_cog(path, bands[:1], TRANSFORM, 32636, ["LW1 8.0-9.2 um"], overview_levels=[2, 4, 8])
+    warnings, errors, details = validate(str(path), full_check=True)
+    assert errors == [] and warnings == []
+    offsets = details["ifd_offsets"]
+    assert set(offsets) == {"main", "overview_0", "overview_1", "overview_2"}
+    # IFDs first (main, then overviews), image data of the smallest overview first
+    assert offsets["main"] < offsets["overview_0"] < offsets["overview_2"]
+    data = details["data_offsets"]
+    assert data["overview_2"] < data["overview_1"] < data["overview_0"] < data["main"]
+
+
+def test_overview_is_nan_aware_average(tmp_path):
+    arr = np.full((1, 128, 128), 10.0, np.float32)
+    arr[0, ::2, ::2] = np.nan  # one cell in four missing
+    arr[0, 64:, :] = 20.0
+    path = tmp_path / "a.tif"
+    write_cog(path, arr, TRANSFORM, 32636, ["LW1 8.0-9.2 um"], overview_levels=[2])
+    with rasterio.open(path) as ds:
+        ov = ds.read(1, out_shape=(64, 64))
+    assert np.nanmax(np.abs(ov[:32] - 10.0)) < 1e-5 and np.allclose(ov[32:], 20.0)
+
+
+def test_grid_object_accepted(tmp_path):
+    class Grid:
+        x0, y0, pixel_size = 532780.0, 3891985.0, 0.05
+
+    write_cog(tmp_path / "g.tif", np.zeros((4, 6), np.float32), Grid(), 32636, ["b"])
+    assert read_mosaic(tmp_path / "g.tif").transform == TRANSFORM
+
+
+@pytest.mark.parametrize(("kwargs", "field"), [
+    ({"bands": np.zeros((2, 3, 4, 5))}, "bands"),
+    ({"band_descriptions": ["a", "b"]}, "band_descriptions"),
+    ({"overview_levels": [4, 2]}, "overview_levels"),
+    ({"tags": {"CLEARFAST_SCAN_TIME_UTC": "noon"}}, "tags.CLEARFAST_SCAN_TIME_UTC"),
+])
+def test_bad_input_names_field(tmp_path, kwargs, field):
+    args = {"bands": np.zeros((1, 8, 8), np.float32), "grid_transform": TRANSFORM, "epsg": 32636,
+            "band_descriptions": ["LW1"], **kwargs}
+    with pytest.raises(InvalidInput) as err:
+        write_cog(tmp_path / "x.tif", **args)
+    assert err.value.field == field
+    assert not list(tmp_path.iterdir())
+
+
+def test_read_missing_file(tmp_path):
+    with pytest.raises(InvalidInput, match="cannot read"):
+        read_mosaic(tmp_path / "nope.tif")
+
+
+@given(st.integers(1, 20000), st.integers(1, 20000))
+def test_overview_factors_property(h, w):
+    f = default_overview_factors(h, w)
+    assert f[0] == 2 and all(b == 2 * a for a, b in zip(f, f[1:], strict=False))
+    if len(f) > 1:
+        assert max(h, w) / f[-1] >= 64 > max(h, w) / (2 * f[-1])
+
+
+def test_band_description_text():
+    assert band_description("LW1", 8, 9.2) == "LW1 8.0-9.2 um"

@@ -1,0 +1,81 @@
+from __future__ import annotations
+
+import time
+
+import numpy as np
+import pytest
+
+from clearfast_gis.errors import InvalidInput
+from clearfast_gis.thermal import (
+    MATERIALS,
+    BuriedObject,
+    build_site_table,
+    invert_anomaly,
+    simulate_object,
+)
+
+RADIUS_M = 0.052
+SOIL = MATERIALS["moist_sand"]
+NOISE_K = 0.05
+
+
+@pytest.fixture(scope="module")
+def table(forcing, scans):
+    return build_site_table(
+        forcing, SOIL, RADIUS_M, scans,
+        depths_m=[0.0, 0.01, 0.02, 0.03, 0.04, 0.06, 0.08, 0.10, 0.15, 0.20],
+        log10_alpha=[-7.5, -7.25, -7.0, -6.5, -6.0, -5.0, -4.5],
+    )
+
+
+def _observe(forcing, scans, depth_m, material="tnt", seed=0):
+    """Truth from the twice-finer model, 0.05 K noise on the centre."""
+    obj = BuriedObject(RADIUS_M, 0.05, depth_m, MATERIALS[material])
+    run = simulate_object(SOIL, obj, forcing, scans, refine=1)
+    rng = np.random.default_rng(seed)
+    return run.surface_k[:, 0] + rng.normal(0, NOISE_K, scans.size), run.background_k
+
+
+@pytest.mark.parametrize("depth_m", [0.0, 0.02, 0.04])
+def test_shallow_tnt_recovered(forcing, scans, table, depth_m):
+    centre, bg = _observe(forcing, scans, depth_m)
+    inv = invert_anomaly(scans, centre, bg, forcing, SOIL, RADIUS_M, NOISE_K, table)
+    assert inv.status == "ok"
+    assert inv.depth_m == pytest.approx(depth_m, abs=0.005)
+    assert inv.alpha_m2s == pytest.approx(MATERIALS["tnt"].alpha_m2s, rel=0.25)
+    assert 0 < inv.depth_sigma_m < 0.005
+    assert inv.residual_rms_k < 2 * NOISE_K
+
+
+def test_deep_object_is_weak_contrast(forcing, scans, table):
+    centre, bg = _observe(forcing, scans, 0.15)
+    inv = invert_anomaly(scans, centre, bg, forcing, SOIL, RADIUS_M, NOISE_K, table)
+    assert inv.status == "weak_contrast"
+
+
+def test_metal_object_is_at_bound(forcing, scans, table):
+    centre, bg = _observe(forcing, scans, 0.01, "aluminium")
+    inv = invert_anomaly(scans, centre, bg, forcing, SOIL, RADIUS_M, NOISE_K, table)
+    assert inv.status == "at_bound"
+    assert inv.alpha_m2s > 1e-5
+
+
+def test_data_the_cylinder_cannot_explain_is_not_characterised(forcing, scans, table):
+    centre, bg = _observe(forcing, scans, 0.02)
+    wobble = 0.6 * np.sin(2 * np.pi * (scans - scans[0]) / 21600.0)
+    inv = invert_anomaly(scans, centre + wobble, bg, forcing, SOIL, RADIUS_M, NOISE_K, table)
+    assert inv.status == "not_characterised"
+
+
+def test_inversion_is_fast_with_a_table(forcing, scans, table):
+    centre, bg = _observe(forcing, scans, 0.03)
+    tic = time.perf_counter()
+    for _ in range(5):
+        invert_anomaly(scans, centre, bg, forcing, SOIL, RADIUS_M, NOISE_K, table)
+    assert (time.perf_counter() - tic) / 5 < 0.5
+
+
+def test_radius_outside_the_table_is_rejected(forcing, scans, table):
+    centre, bg = _observe(forcing, scans, 0.02)
+    with pytest.raises(InvalidInput, match="radius_m"):
+        invert_anomaly(scans, centre, bg, forcing, SOIL, 0.17, NOISE_K, table)
