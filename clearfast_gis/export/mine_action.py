@@ -23,6 +23,7 @@ import numpy as np
 from clearfast_gis.atomic import write_text
 from clearfast_gis.errors import InvalidInput
 from clearfast_gis.progress import NULL_PROGRESS, Progress
+from clearfast_gis.timeutil import format_utc, parse_utc
 
 METHOD = "stand-off thermal IR"
 EVIDENCE = "indirect"
@@ -230,6 +231,11 @@ def export_mine_action(products_dir: str | os.PathLike, out_dir: str | os.PathLi
     gpkg_in = products / "anomalies.gpkg"
     if not gpkg_in.is_file():
         raise InvalidInput("missing: no anomalies.gpkg in the products folder", gpkg_in)
+    try:
+        survey_date = format_utc(parse_utc(manifest["time"]["start_utc"]), "seconds")
+    except ValueError:
+        raise InvalidInput("not an ISO 8601 UTC time", products / "products.json",
+                           "time.start_utc") from None
     progress.start("mine_action", 3)
     try:
         try:
@@ -243,8 +249,7 @@ def export_mine_action(products_dir: str | os.PathLike, out_dir: str | os.PathLi
             raise InvalidInput("missing column", gpkg_in, f"suspects.{missing[0]}")
         progress.advance()
         epsg = int(manifest["crs"]["epsg"])
-        table = mine_action_table(suspects, manifest["survey_id"],
-                                  manifest["time"]["start_utc"], epsg)
+        table = mine_action_table(suspects, manifest["survey_id"], survey_date, epsg)
         progress.advance()
         frame = gpd.GeoDataFrame(
             table, geometry=gpd.points_from_xy(table["longitude_deg"], table["latitude_deg"]),

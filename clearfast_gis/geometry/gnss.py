@@ -7,6 +7,7 @@ and refuses frame times that are too far from any usable fix.
 
 from __future__ import annotations
 
+import dataclasses
 import functools
 from dataclasses import dataclass
 from typing import Protocol
@@ -239,3 +240,63 @@ def platform_track(gnss_log: GnssArrays, epsg: int, ground_altitude_m: float,
     pos[usable, 1] = y
     pos[usable, 2] = alt[usable] - float(ground_altitude_m)
     return PlatformTrack(t, quality, usable, pos, int(epsg), float(max_gap_s), source)
+
+
+FIX_SIGMA_M: dict[int, float] = {4: 0.02, 5: 0.30, 2: 0.8, 1: 2.0, 6: 5.0}
+"""Typical 1-sigma horizontal position noise per GGA fix quality, metres (RTK fixed,
+RTK float, DGPS, autonomous, dead reckoning); other qualities count as autonomous."""
+
+
+def smooth_static_track(track: PlatformTrack, window_s: float = 600.0,
+                        max_gap_s: float = 600.0) -> PlatformTrack:
+    """Smooth the track of a quasi-static platform (a parked boom lift).
+
+    Each usable epoch's position is replaced by a local linear fit in time over the usable
+    epochs within ``window_s`` of it, weighted by ``1 / sigma^2`` of their fix quality
+    (:data:`FIX_SIGMA_M`). RTK-fixed epochs then dominate wherever they exist, RTK-float noise
+    (decimetres) averages down where they do not, and a slow drift (a sinking lift) is still
+    followed. Short losses of fix are bridged up to ``max_gap_s``.
+
+    Parameters
+    ----------
+    track : PlatformTrack
+    window_s : float
+        Half-width of the fitting window, seconds.
+    max_gap_s : float
+        Largest distance in time to a usable fix for which the smoothed track gives a
+        position, seconds.
+
+    Returns
+    -------
+    PlatformTrack
+        Same epochs and qualities, smoothed positions.
+    """
+    idx = np.flatnonzero(track.usable)
+    if idx.size == 0:
+        return track
+    t = track.time_s[idx]
+    q = track.fix_quality[idx]
+    sigma = np.array([FIX_SIGMA_M.get(int(v), FIX_SIGMA_M[1]) for v in q])
+    w = 1.0 / sigma**2
+    tc = t - t.mean()
+    lo = np.searchsorted(t, t - window_s, side="left")
+    hi = np.searchsorted(t, t + window_s, side="right")
+
+    def window_sum(v: np.ndarray) -> np.ndarray:
+        c = np.concatenate([[0.0], np.cumsum(v)])
+        return c[hi] - c[lo]
+
+    s0, s1, s2 = window_sum(w), window_sum(w * tc), window_sum(w * tc * tc)
+    det = s0 * s2 - s1 * s1
+    pos = track.position_m.copy()
+    for k in range(3):
+        x = track.position_m[idx, k]
+        x0 = x.mean()
+        b0, b1 = window_sum(w * (x - x0)), window_sum(w * tc * (x - x0))
+        with np.errstate(invalid="ignore", divide="ignore"):
+            slope = np.where(det > 1e-12 * s0 * s0 * window_s**2, (s0 * b1 - s1 * b0) / det,
+                             0.0)
+        mean = b0 / s0
+        tbar = s1 / s0
+        pos[idx, k] = x0 + mean + slope * (tc - tbar)
+    return dataclasses.replace(track, position_m=pos, max_gap_s=float(max_gap_s))

@@ -15,7 +15,17 @@ from dataclasses import dataclass
 import numpy as np
 
 from clearfast_gis.mosaic.project import ProjectedFrame
-from clearfast_gis.registration import ConformalTransform, register_conformal, warp_conformal
+from clearfast_gis.registration import (
+    ConformalTransform,
+    mutual_information,
+    register_conformal,
+    warp_conformal,
+)
+
+MIN_MI_GAIN = 0.03
+"""A correction is applied only if it raises the mutual information over the predicted
+placement by this fraction: the geometric pose (RTK-DGPS, pan/tilt) is already good to a few
+centimetres, and a weak optimum in a low-contrast window must not move a frame."""
 
 
 @dataclass(frozen=True)
@@ -31,7 +41,9 @@ class FrameCorrection:
     applied : bool
         False when the geometric pose was kept.
     reason : str
-        ``ok``, ``no_overlap``, ``not_converged``, ``beyond_bound`` or ``disabled``.
+        ``ok``, ``no_overlap``, ``not_converged``, ``no_gain`` (no clear improvement of the
+        mutual information over the predicted placement), ``beyond_bound`` or ``disabled``;
+        ``*_kept_prediction`` when the previous scan's correction was kept instead.
     metric : float
         Mutual information at the solution (nats), NaN if not registered.
     """
@@ -46,6 +58,15 @@ class FrameCorrection:
 
 def _band0(values: np.ndarray) -> np.ndarray:
     return values[0] if values.ndim == 3 else values
+
+
+def _mi_after(ref: np.ndarray, mov: np.ndarray, t: ConformalTransform) -> float:
+    """Mutual information (nats) of ``ref`` and ``mov`` resampled by ``t`` on their overlap."""
+    warped = warp_conformal(mov, t, ref.shape)
+    both = np.isfinite(ref) & np.isfinite(warped)
+    if both.sum() < 64:
+        return 0.0
+    return float(mutual_information(ref, warped, mask=both, bins=24))
 
 
 def coregister_projected(projected: ProjectedFrame, reference: np.ndarray, pixel_size_m: float,
@@ -92,6 +113,11 @@ def coregister_projected(projected: ProjectedFrame, reference: np.ndarray, pixel
                            max_angle_deg=max_angle_deg, init=start, bins=24)
     if not t.converged:
         return projected, FrameCorrection(reason="not_converged", metric=t.metric), None
+    base_t = start if start is not None else ConformalTransform.identity(centre)
+    mi_base = _mi_after(ref, mov, base_t)
+    mi_new = _mi_after(ref, mov, t)
+    if not mi_new > mi_base * (1.0 + MIN_MI_GAIN):
+        return projected, FrameCorrection(reason="no_gain", metric=mi_new), None
     # ground displacement of the window centre: content at fixed x comes from moving T(x)
     moved = t.apply(np.array([centre]))[0]
     du, dv = centre[0] - moved[0], centre[1] - moved[1]

@@ -44,7 +44,7 @@ class ProcessOptions:
     pixel_size_m: float | None = None
     coregister: bool = True
     max_shift_m: float = 0.3
-    max_angle_deg: float = 1.5
+    max_angle_deg: float = 0.0
     seam_balance: bool = False
     reference_scan: int = 0
     atmosphere: bool = True

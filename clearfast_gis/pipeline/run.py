@@ -17,7 +17,7 @@ from clearfast_gis.export.manifest import (
     read_products_manifest,
     write_products_manifest,
 )
-from clearfast_gis.geometry.gnss import platform_track, utm_epsg_for
+from clearfast_gis.geometry.gnss import platform_track, smooth_static_track, utm_epsg_for
 from clearfast_gis.geometry.projection import frame_footprint
 from clearfast_gis.mosaic import build_scan_mosaic, mosaic_grid, temporal_residual
 from clearfast_gis.mosaic.build import FrameCorrection
@@ -101,8 +101,9 @@ def open_context(survey_path: str | Path, progress: Progress = NULL_PROGRESS):
     survey = read_survey(survey_path)
     gnss = read_nmea(survey.path("gnss"), fallback_date_s=survey.start_s)
     epsg = _survey_epsg(survey, gnss)
-    track = platform_track(gnss, epsg, float(survey.manifest["site"]["ground_altitude_m"]),
-                           source=survey.label("gnss"))
+    track = smooth_static_track(platform_track(
+        gnss, epsg, float(survey.manifest["site"]["ground_altitude_m"]),
+        source=survey.label("gnss")))
     weather = read_toa5(survey.path("weather"))
     events = calibration_events(survey)
     ctx = SurveyContext(survey, survey.camera, track, events, weather,

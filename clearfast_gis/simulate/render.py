@@ -99,15 +99,15 @@ def surface_radiance_frame(rays: FrameRays, pose: CameraPose, rgrid: RadianceGri
     want = (0.4 * inv) * footprint_m(t, dz, ifov_rad)
     sig = np.asarray(BLUR_SIGMAS_CELLS)
     level = np.digitize(want, 0.5 * (sig[1:] + sig[:-1]))
-    out = np.empty(map_x.shape, np.float32)
-    for k in np.unique(level):
-        sample = cv2.remap(rgrid.levels[k], map_x, map_y, cv2.INTER_LINEAR,
-                           borderMode=cv2.BORDER_REPLICATE)
-        if k == level.min() and k == level.max():
-            out = sample
-            break
+    k_lo, k_hi = int(level.min()), int(level.max())
+    out = cv2.remap(rgrid.levels[k_lo], map_x, map_y, cv2.INTER_LINEAR,
+                    borderMode=cv2.BORDER_REPLICATE)
+    for k in range(k_lo + 1, k_hi + 1):
         sel = level == k
-        out[sel] = sample[sel]
+        if sel.any():
+            sample = cv2.remap(rgrid.levels[k], map_x, map_y, cv2.INTER_LINEAR,
+                               borderMode=cv2.BORDER_REPLICATE)
+            out[sel] = sample[sel]
     out[~hit] = rgrid.sky_radiance
     return out, t.astype(np.float32)
 

@@ -244,6 +244,7 @@ class ValidateSurveyAlgorithm(ToolkitAlgorithm):
         self.addParameter(QgsProcessingParameterFileDestination(
             "REPORT", "Validation report (JSON)", "JSON files (*.json)", optional=True))
         self.addOutput(QgsProcessingOutputBoolean("VALID", "Survey is valid"))
+        self.addOutput(QgsProcessingOutputNumber("PROBLEMS", "Number of problems"))
         self.addOutput(QgsProcessingOutputVectorLayer(
             "MARKERS", "Survey markers", QgsProcessing.TypeVectorPoint))
 
@@ -259,12 +260,18 @@ class ValidateSurveyAlgorithm(ToolkitAlgorithm):
             doc = json.loads(text) if text else {}
         except ValueError:
             doc = {}
-        if not valid:
+        problems = [p for p in doc.get("problems", []) if isinstance(p, dict)]
+        for item in doc.get("warnings", []):
+            if isinstance(item, dict):
+                feedback.pushInfo(f"warning: {item.get('line', item.get('message', ''))}")
+        for item in problems:
+            feedback.reportError(str(item.get("line", item.get("message", ""))), False)
+        if not valid and not problems:
             feedback.reportError(f"survey is not valid: {error_line(result)}", False)
         if report:
             with open(report, "w", encoding="utf-8") as fh:
                 fh.write((json.dumps(doc, indent=2) if doc else text) + "\n")
-        outputs = {"VALID": valid, "REPORT": report or None}
+        outputs = {"VALID": valid, "REPORT": report or None, "PROBLEMS": len(problems)}
         markers = os.path.join(survey, "markers.csv")
         if os.path.isfile(markers):
             uri = ("file://" + markers.replace(os.sep, "/") +

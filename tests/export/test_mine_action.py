@@ -123,3 +123,22 @@ def test_cli_export(demo_products, tmp_path):
     assert r.returncode == 1 and "Traceback" not in r.stderr
     assert r.stderr.strip().endswith("products.json: missing: not a products folder")
     assert len(r.stderr.strip().splitlines()) == 1
+
+
+def test_survey_date_normalised_and_checked(demo_products, tmp_path):
+    import json
+    import shutil
+
+    folder = tmp_path / "p"
+    shutil.copytree(demo_products.root, folder)
+    doc = json.loads((folder / "products.json").read_text())
+    doc["time"]["start_utc"] = "2026-11-15T00:00:00.000Z"
+    (folder / "products.json").write_text(json.dumps(doc))
+    res = export_mine_action(folder)
+    assert res.csv == folder / "mine_action" / "mine_action.csv"
+    assert {r["survey_date_utc"] for r in read_csv(res.csv)} == {"2026-11-15T00:00:00Z"}
+    doc["time"]["start_utc"] = "noon"
+    (folder / "products.json").write_text(json.dumps(doc))
+    with pytest.raises(InvalidInput) as err:
+        export_mine_action(folder)
+    assert err.value.field == "time.start_utc"

@@ -6,6 +6,7 @@ from __future__ import annotations
 import importlib.util
 import json
 import os
+import shlex
 import threading
 import time
 
@@ -96,7 +97,8 @@ def test_process_survey_returns_layers(qgis_app, fake_toolkit, tmp_path, monkeyp
     if REAL_PIPELINE:
         subprocess.run([sys.executable, "-m", "clearfast_gis.cli.main", "simulate", str(survey)],
                        check=True, capture_output=True)
-        monkeypatch.setenv("CLEARFAST_COMMAND", f"{sys.executable} -m clearfast_gis.cli.main")
+        monkeypatch.setenv("CLEARFAST_COMMAND",
+                           shlex.join([sys.executable, "-m", "clearfast_gis.cli.main"]))
     else:
         survey.mkdir()
     out = tmp_path / "products"
@@ -163,6 +165,17 @@ def test_validate_survey_reports_invalid(qgis_app, fake_toolkit, tmp_path, monke
     results, ok, _, feedback = run_alg("clearfast:validatesurvey", {"SURVEY": str(tmp_path)})
     assert ok and results["VALID"] is False
     assert "camera.resolution: expected 2 integers" in feedback.textLog()
+
+
+def test_validate_survey_real_toolkit_lists_problems(qgis_app, real_toolkit, tmp_path):
+    report = tmp_path / "report.json"
+    results, ok, _, feedback = run_alg(
+        "clearfast:validatesurvey", {"SURVEY": str(tmp_path), "REPORT": str(report)})
+    assert ok and results["VALID"] is False and results["PROBLEMS"] >= 1
+    doc = json.loads(report.read_text())
+    assert doc["valid"] is False
+    assert doc["problems"][0]["line"] in feedback.textLog()
+    assert "survey.json" in doc["problems"][0]["line"]
 
 
 def test_progress_lines_drive_feedback(qgis_app, fake_toolkit, monkeypatch, products, tmp_path):

@@ -186,3 +186,10 @@ def test_bad_input_raises_invalid_input(kwargs: dict, field: str) -> None:
     with pytest.raises(InvalidInput) as err:
         register_conformal(**args)
     assert err.value.field == field
+
+
+def test_featureless_image_is_not_converged() -> None:
+    flat = np.full(SHAPE, 12.5, dtype=np.float32)
+    result = register_conformal(flat, thermal_scene(SHAPE, 3))
+    assert not result.converged
+    assert np.isfinite([result.angle_rad, result.tx_px, result.ty_px]).all()
