@@ -1,7 +1,17 @@
-"""Shared test fixtures."""
+"""Shared test fixtures.
+
+``demo_survey`` / ``demo_products``: the simulated demo survey (seed 0) and its products, made
+once per source version and shared by every test process (pytest-xdist workers take a file
+lock, the first one builds, the others reuse).
+"""
 
 from __future__ import annotations
 
+import fcntl
+import hashlib
+import os
+import shutil
+import tempfile
 from pathlib import Path
 
 import pytest
@@ -10,6 +20,55 @@ REPO = Path(__file__).resolve().parents[1]
 SHARED = REPO.parent / "shared"
 
 
+def _source_key() -> str:
+    h = hashlib.sha256()
+    for p in sorted((REPO / "clearfast_gis").rglob("*")):
+        if p.suffix in (".py", ".json", ".qml") and "__pycache__" not in p.parts:
+            h.update(p.relative_to(REPO).as_posix().encode())
+            h.update(p.read_bytes())
+    return h.hexdigest()[:16]
+
+
+def _cache_dir() -> Path:
+    root = Path(os.environ.get("CLEARFAST_TEST_CACHE",
+                               Path(tempfile.gettempdir()) / "clearfast-test-cache"))
+    d = root / _source_key()
+    d.mkdir(parents=True, exist_ok=True)
+    return d
+
+
+def _build_once(name: str, build) -> Path:
+    d = _cache_dir()
+    target = d / name
+    with open(d / f"{name}.lock", "w") as lock:
+        fcntl.flock(lock, fcntl.LOCK_EX)
+        try:
+            if not (d / f"{name}.done").exists():
+                if target.exists():
+                    shutil.rmtree(target)
+                build(target)
+                (d / f"{name}.done").write_text("ok")
+        finally:
+            fcntl.flock(lock, fcntl.LOCK_UN)
+    return target
+
+
 @pytest.fixture(scope="session")
 def repo_root() -> Path:
     return REPO
+
+
+@pytest.fixture(scope="session")
+def demo_survey() -> Path:
+    """The simulated demo survey, seed 0 (read-only: copy before changing it)."""
+    from clearfast_gis.simulate import preset, simulate_survey
+
+    return _build_once("demo-survey", lambda t: simulate_survey(t, preset("demo"), seed=0))
+
+
+@pytest.fixture(scope="session")
+def demo_products(demo_survey) -> Path:
+    """``clearfast process`` of the demo survey with default parameters (read-only)."""
+    from clearfast_gis.pipeline import process_survey
+
+    return _build_once("demo-products", lambda t: process_survey(demo_survey, t))

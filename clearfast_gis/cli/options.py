@@ -53,8 +53,9 @@ def mosaic_options(f):
     f = click.option("--seam-balance", is_flag=True,
                      help="Apply the paper's histogram seam balancing (changes temperatures; "
                      "recorded in the products).")(f)
-    f = click.option("--reference-scan", type=click.IntRange(min=0), default=0,
-                     show_default=True, help="Scan the others are co-registered to.")(f)
+    f = click.option("--reference-scan", type=click.IntRange(min=0), default=None,
+                     help="Scan the others are co-registered to (default: the scan nearest "
+                     "local solar noon).")(f)
     f = click.option("--no-atmosphere", is_flag=True,
                      help="Skip the atmospheric correction.")(f)
     return f

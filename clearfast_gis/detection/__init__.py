@@ -7,6 +7,7 @@ from clearfast_gis.detection.features import (
     AnomalyFeatures,
     blob_features,
     features_table,
+    local_solar_hour,
     summary_polarity,
 )
 from clearfast_gis.detection.morphology import (
@@ -17,6 +18,13 @@ from clearfast_gis.detection.morphology import (
     erode_disk,
     top_hat_by_reconstruction,
 )
+from clearfast_gis.detection.multiscale import (
+    MultiScaleParams,
+    altitude_from_name,
+    altitude_ladder,
+    detect_snapshot_multiscale,
+    scale_ladder,
+)
 from clearfast_gis.detection.reconstruction import (
     binary_reconstruction,
     reconstruction,
@@ -24,14 +32,14 @@ from clearfast_gis.detection.reconstruction import (
     reconstruction_by_erosion,
 )
 from clearfast_gis.detection.snapshot import Detection, detect_snapshot
-from clearfast_gis.detection.solar import local_solar_hour, solar_elevation_deg
 
 __all__ = [
-    "CLASSES", "AnomalyFeatures", "Detection", "DetectionResult",
+    "CLASSES", "AnomalyFeatures", "Detection", "DetectionResult", "MultiScaleParams",
+    "altitude_from_name", "altitude_ladder", "detect_snapshot_multiscale", "scale_ladder",
     "binary_opening_by_reconstruction",
     "binary_reconstruction", "blob_features", "bottom_hat_by_reconstruction", "classify",
     "detect_anomalies", "detect_snapshot", "dilate_disk", "diffusivity_cue", "disk_footprint",
     "erode_disk", "features_table", "local_solar_hour", "reconstruction",
-    "reconstruction_by_dilation", "reconstruction_by_erosion", "solar_elevation_deg",
+    "reconstruction_by_dilation", "reconstruction_by_erosion",
     "summary_polarity", "top_hat_by_reconstruction",
 ]

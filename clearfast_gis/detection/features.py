@@ -37,12 +37,42 @@ import numpy as np
 from skimage.measure import regionprops
 
 from clearfast_gis.detection.detector import DetectionResult, as_image_stack
-from clearfast_gis.detection.solar import local_solar_hour
+from clearfast_gis.thermal.solar import sun_times
 
-__all__ = ["AnomalyFeatures", "blob_features", "features_table", "summary_polarity"]
+__all__ = ["AnomalyFeatures", "blob_features", "features_table", "local_solar_hour",
+           "summary_polarity"]
 
 DAY_HOURS = (9.0, 17.0)
 NIGHT_HOURS = (20.0, 6.0)
+
+
+def local_solar_hour(time_s: np.ndarray | float, longitude_deg: float,
+                     latitude_deg: float = 0.0) -> np.ndarray:
+    """Local apparent solar time in hours [0, 24) (12 = solar noon).
+
+    Derived from the solar noon of :func:`clearfast_gis.thermal.solar.sun_times` (the one sun
+    model of the package): ``12 + (t - noon) / 3600`` wrapped to [0, 24), with the noon of the
+    UTC day containing ``t``.
+
+    Parameters
+    ----------
+    time_s : array_like, shape (N,) or scalar
+        UTC epoch seconds.
+    longitude_deg : float
+        Longitude, degrees east positive.
+    latitude_deg : float
+        Latitude, degrees (does not change the solar noon; passed through to ``sun_times``).
+
+    Returns
+    -------
+    ndarray, same shape as ``time_s``, hours.
+    """
+    t = np.asarray(time_s, dtype=np.float64)
+    days = np.floor(t / 86400.0)
+    noon = np.empty_like(t)
+    for day in np.unique(days):
+        noon[days == day] = sun_times(latitude_deg, longitude_deg, float(day) * 86400.0)[1]
+    return np.mod(12.0 + (t - noon) / 3600.0, 24.0)
 
 
 @dataclass
@@ -207,7 +237,9 @@ def blob_features(
         c_scan = np.nanmean(contrast, axis=1) if b > 1 else contrast[:, 0]
         sigma = noise_k if noise == "ring" else image_noise
         cnr = np.abs(contrast) / np.maximum(sigma, 1e-6)
-        cnr_scan = np.nanmax(cnr, axis=1)
+        with warnings.catch_warnings():  # an empty ring gives an all-NaN row
+            warnings.simplefilter("ignore", category=RuntimeWarning)
+            cnr_scan = np.nanmax(cnr, axis=1)
         pol = _polarity(detection, rows, cols, c_scan, cnr_scan, n)
         seen = pol != 0
         support = cnr_scan[seen] if seen.any() else cnr_scan

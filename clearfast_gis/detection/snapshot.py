@@ -42,6 +42,8 @@ class Detection:
         Centre mean minus ring mean, in the image's units.
     bbox : (row0, col0, row1, col1)
         Bounding box, end exclusive.
+    scale_px : float
+        Object diameter of the scale that found it (multi-scale mode), else 0.
     """
 
     x_px: float
@@ -53,6 +55,7 @@ class Detection:
     polarity: str
     contrast: float
     bbox: tuple[int, int, int, int]
+    scale_px: float = 0.0
 
 
 def detect_snapshot(

@@ -173,12 +173,17 @@ def write_cog(
         src.units = ["deg C"] * n_bands
         src.update_tags(**meta)
         src.build_overviews(factors, Resampling.average)
-        with atomic_path(path) as tmp:
+        # built in memory, then written by Python: a full disk or a refused write is an
+        # OSError that atomic_path reports as one line, not a libtiff message
+        with MemoryFile(ext=".tif") as out:
             rasterio.shutil.copy(
-                src, tmp, driver="COG", COMPRESS="DEFLATE", PREDICTOR="3",
+                src, out.name, driver="COG", COMPRESS="DEFLATE", PREDICTOR="3",
                 BLOCKSIZE=str(BLOCK_SIZE_PX), OVERVIEWS="FORCE_USE_EXISTING",
                 BIGTIFF="IF_SAFER",
             )
+            data = out.read()
+    with atomic_path(path) as tmp:
+        tmp.write_bytes(data)
     return os.fspath(path)
 
 

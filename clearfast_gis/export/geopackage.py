@@ -39,6 +39,7 @@ def write_geopackage(
     layers: Mapping[str, object],
     styles: Mapping[str, str] | None = None,
     style_name: str = "default",
+    timestamp_s: float | None = None,
 ) -> str:
     """Write GeoDataFrames as layers of one GeoPackage, with default styles, atomically.
 
@@ -53,6 +54,10 @@ def write_geopackage(
         Layer name -> QML text stored as that layer's default style in ``layer_styles``.
     style_name : str
         ``styleName`` of the stored styles.
+    timestamp_s : float, optional
+        UTC epoch seconds written as every table's ``gpkg_contents.last_change`` and every
+        style's ``update_time``; with it, the same layers give a byte-identical file (a
+        re-run reproduces its products exactly). Default: the time of writing.
 
     Returns
     -------
@@ -84,11 +89,32 @@ def write_geopackage(
                 )
             if styles:
                 add_layer_styles(work, styles, style_name=style_name)
+            if timestamp_s is not None:
+                set_timestamps(work, timestamp_s)
             os.replace(work, tmp)
         finally:
             if work.exists():
                 work.unlink()
     return os.fspath(path)
+
+
+def set_timestamps(path: str | os.PathLike, timestamp_s: float) -> None:
+    """Set ``gpkg_contents.last_change`` (and ``layer_styles.update_time``) to one instant.
+
+    GDAL and SQLite stamp these with the wall clock; a fixed instant (e.g. the survey's end)
+    makes the file a pure function of its content.
+    """
+    from clearfast_gis.timeutil import format_utc
+
+    stamp = format_utc(float(timestamp_s), timespec="milliseconds")
+    with sqlite3.connect(os.fspath(path)) as con:
+        con.execute("UPDATE gpkg_contents SET last_change = ?", (stamp,))
+        has_styles = con.execute(
+            "SELECT 1 FROM sqlite_master WHERE type = 'table' AND name = 'layer_styles'"
+        ).fetchone()
+        if has_styles is not None:
+            con.execute("UPDATE layer_styles SET update_time = ?", (stamp,))
+    con.close()
 
 
 def _geometry_type(frame) -> str | None:

@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import math
 from collections.abc import Iterable
 from dataclasses import dataclass, field
 
@@ -15,7 +14,6 @@ from clearfast_gis.mosaic.insert import MosaicCanvas
 from clearfast_gis.mosaic.project import project_frame
 from clearfast_gis.mosaic.seams import fit_linear_histogram_mapping
 from clearfast_gis.progress import NULL_PROGRESS, Progress
-from clearfast_gis.registration import ConformalTransform
 
 
 @dataclass
@@ -64,15 +62,8 @@ class ScanMosaic:
         return self.source >= 0
 
 
-def correction_as_transform(corr: FrameCorrection, pixel_size_m: float) -> ConformalTransform:
-    """A recorded ground correction as a window transform (the start of the next scan's)."""
-    return ConformalTransform(angle_rad=-math.radians(corr.angle_deg),
-                              tx_px=-corr.dx_m / pixel_size_m, ty_px=corr.dy_m / pixel_size_m)
-
-
 def build_scan_mosaic(frames: Iterable[FrameInput], camera, grid: GroundGrid, n_bands: int,
                       coregister: bool = True, reference: np.ndarray | None = None,
-                      predicted: dict[int, FrameCorrection] | None = None,
                       max_shift_m: float = 0.25, max_angle_deg: float = 1.5,
                       seam_balance: bool = False, progress: Progress = NULL_PROGRESS,
                       ) -> ScanMosaic:
@@ -93,11 +84,8 @@ def build_scan_mosaic(frames: Iterable[FrameInput], camera, grid: GroundGrid, n_
         The reference scan's mosaic. When given, frames are registered to it (temporal
         co-registration frame by frame, which also follows a drifting platform); otherwise
         to the mosaic built so far.
-    predicted : dict[int, FrameCorrection], optional
-        Corrections of the same positions in the previous scan, used as the starting point
-        (a slowly drifting platform moves the view a little from scan to scan).
     max_shift_m, max_angle_deg : float
-        Bound of the correction around the prediction.
+        Bound of each frame's correction.
     seam_balance : bool
         Apply the paper's histogram-based linear mapping to each frame before insertion.
     progress : Progress
@@ -118,15 +106,8 @@ def build_scan_mosaic(frames: Iterable[FrameInput], camera, grid: GroundGrid, n_
         if coregister:
             rs, cs = projected.window.slices
             ref = canvas.values[:, rs, cs] if reference is None else reference[:, rs, cs]
-            prev = None if predicted is None else predicted.get(frame.index)
-            init = None
-            if prev is not None and prev.applied:
-                init = correction_as_transform(prev, grid.pixel_size)
             projected, corr, _ = coregister_projected(
-                projected, ref, grid.pixel_size, max_shift_m, max_angle_deg, init=init)
-            if not corr.applied and prev is not None and prev.applied and init is not None:
-                corr = FrameCorrection(prev.dx_m, prev.dy_m, prev.angle_deg, False,
-                                       f"{corr.reason}_kept_prediction", corr.metric)
+                projected, ref, grid.pixel_size, max_shift_m, max_angle_deg)
             corrections[frame.index] = corr
         if seam_balance:
             under = canvas.window_values(projected)

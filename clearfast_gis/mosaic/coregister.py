@@ -42,8 +42,7 @@ class FrameCorrection:
         False when the geometric pose was kept.
     reason : str
         ``ok``, ``no_overlap``, ``not_converged``, ``no_gain`` (no clear improvement of the
-        mutual information over the predicted placement), ``beyond_bound`` or ``disabled``;
-        ``*_kept_prediction`` when the previous scan's correction was kept instead.
+        mutual information over the predicted placement), ``beyond_bound`` or ``disabled``.
     metric : float
         Mutual information at the solution (nats), NaN if not registered.
     """

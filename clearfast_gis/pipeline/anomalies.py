@@ -40,6 +40,8 @@ class AnomalySet:
         Soil diffusivity from the thermocouples.
     notes : list of str
         What the characterisation had to skip, and why.
+    markers : list of MarkerMatch
+        Known markers found among the anomalies (removed from ``features``).
     """
 
     labels: np.ndarray
@@ -48,6 +50,7 @@ class AnomalySet:
     soil_alpha_m2s: float = math.nan
     soil_alpha_sigma_m2s: float = math.nan
     notes: list[str] = dataclasses.field(default_factory=list)
+    markers: list[MarkerMatch] = dataclasses.field(default_factory=list)
 
 
 def disk_px(size_m: float, pixel_size_m: float, minimum: int = 3) -> int:
@@ -59,6 +62,7 @@ def disk_px(size_m: float, pixel_size_m: float, minimum: int = 3) -> int:
 def detect_on_mosaics(stack_c: np.ndarray, times_s: np.ndarray, transform, pixel_size_m: float,
                       longitude_deg: float, d1_m: float, d2_m: float, epsilon: float,
                       level: int | None, gamma: float | None, max_anomalies: int,
+                      level_fraction: float = 0.5,
                       progress: Progress = NULL_PROGRESS) -> tuple[np.ndarray, list]:
     """The morphological detector on mosaics, and blob features.
 
@@ -75,6 +79,8 @@ def detect_on_mosaics(stack_c: np.ndarray, times_s: np.ndarray, transform, pixel
     longitude_deg : float
         Site longitude (local solar time for the polarity).
     d1_m, d2_m, epsilon, level, gamma : detector parameters (paper §4), sizes in metres.
+    level_fraction : float
+        Voting level as a fraction of the N x B images when ``level`` is None.
     max_anomalies : int
         Keep the highest-scoring ones.
 
@@ -84,6 +90,8 @@ def detect_on_mosaics(stack_c: np.ndarray, times_s: np.ndarray, transform, pixel
         Relabelled 1..K in the order of ``features``.
     features : list of AnomalyFeatures
     """
+    if level is None:
+        level = max(1, int(round(level_fraction * stack_c.shape[0] * stack_c.shape[1])))
     det = detect_anomalies(stack_c, disk_px(d1_m, pixel_size_m), disk_px(d2_m, pixel_size_m),
                            epsilon=epsilon, level=level, gamma=gamma, progress=progress)
     feats = blob_features(det.labels, stack_c, times_s=times_s, transform=transform,
@@ -95,6 +103,67 @@ def detect_on_mosaics(stack_c: np.ndarray, times_s: np.ndarray, transform, pixel
         labels[det.labels == f.id] = new_id
         renumbered.append(dataclasses.replace(f, id=new_id))
     return labels, renumbered
+
+
+@dataclass(frozen=True)
+class MarkerMatch:
+    """A known marker found among the anomalies (a check of the georeferencing).
+
+    Attributes
+    ----------
+    marker_id : str
+    x, y : float
+        Surveyed position, survey CRS metres.
+    found_x, found_y : float
+        Centroid of the matching anomaly, survey CRS metres.
+    """
+
+    marker_id: str
+    x: float
+    y: float
+    found_x: float
+    found_y: float
+
+    @property
+    def offset_m(self) -> float:
+        """Distance between the surveyed and the found position, metres."""
+        return math.hypot(self.found_x - self.x, self.found_y - self.y)
+
+
+def split_markers(features: list[AnomalyFeatures], marker_ids: list[str],
+                  marker_xy: np.ndarray, radius_m: float = 0.3
+                  ) -> tuple[list[AnomalyFeatures], list[MarkerMatch]]:
+    """Separate anomalies that are known surveyed markers from the suspects.
+
+    Parameters
+    ----------
+    features : list of AnomalyFeatures
+    marker_ids : list of str
+    marker_xy : float (M, 2)
+        Surveyed marker positions, survey CRS metres.
+    radius_m : float
+        An anomaly whose centroid lies this close to a marker is that marker.
+
+    Returns
+    -------
+    suspects : list of AnomalyFeatures
+        The anomalies that are not markers.
+    matches : list of MarkerMatch
+        The nearest anomaly of each marker found.
+    """
+    if len(marker_ids) == 0 or not features:
+        return features, []
+    fx = np.array([f.x for f in features])
+    fy = np.array([f.y for f in features])
+    d = np.hypot(fx[:, None] - marker_xy[None, :, 0], fy[:, None] - marker_xy[None, :, 1])
+    is_marker = d.min(axis=1) <= radius_m
+    matches = []
+    for j, mid in enumerate(marker_ids):
+        i = int(np.argmin(d[:, j]))
+        if d[i, j] <= radius_m:
+            matches.append(MarkerMatch(str(mid), float(marker_xy[j, 0]), float(marker_xy[j, 1]),
+                                       float(fx[i]), float(fy[i])))
+    return [f for f, m in zip(features, is_marker, strict=True) if not m], matches
 
 
 def _band0(series: np.ndarray) -> np.ndarray:
@@ -147,6 +216,8 @@ def characterise(features: list[AnomalyFeatures], times_s: np.ndarray, forcing: 
     Returns
     -------
     dict[int, Inversion]
+        Anomalies seen in fewer than 4 scans (with their background ring) are left out: their
+        status is ``not_characterised``.
     """
     if not features:
         return {}
@@ -161,7 +232,7 @@ def characterise(features: list[AnomalyFeatures], times_s: np.ndarray, forcing: 
         centre = _band0(f.centre_k) + ZERO_CELSIUS_K
         ring = _band0(f.ring_k) + ZERO_CELSIUS_K
         r_tab = float(np.clip(r, nodes.min(), nodes.max()))
-        if np.isfinite(centre).sum() >= 4:
+        if (np.isfinite(centre) & np.isfinite(ring)).sum() >= 4:
             out[f.id] = invert_anomaly(times_s, centre, ring, forcing, soil, r_tab, table=table)
         progress.advance()
     progress.close()

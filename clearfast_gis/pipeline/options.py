@@ -16,14 +16,24 @@ class ProcessOptions:
     pixel_size_m : float or None
         Mosaic cell size, metres; None: from the mission's ground resolution.
     coregister : bool
-        Mutual-information correction of every frame's placement (paper §5.2, §3.4).
+        Correct the geometry by image registration (paper §5.2, §3.4): per scan, the
+        platform attitude (roll, pitch, yaw of the pan/tilt base, which the RTK-DGPS does not
+        measure) is fitted to frame displacements measured by mutual information against the
+        reference scan and to the surveyed markers.
+    search_m : float
+        Largest displacement searched when measuring a frame against the reference, metres.
+    frame_refine : bool
+        After the attitude fit, also shift each frame individually by mutual information
+        against the mosaic so far / the reference (bounded by ``max_shift_m``).
     max_shift_m, max_angle_deg : float
-        Bound of a frame's correction around its prediction.
+        Bound of the individual frame correction.
     seam_balance : bool
         The paper's histogram-based radiometric seam balancing (§5.3); changes temperatures,
         so off by default and recorded in the products when on.
-    reference_scan : int
-        Scan whose mosaic the others are co-registered to.
+    reference_scan : int or None
+        Scan whose mosaic the others are co-registered to; None: the scan nearest local
+        solar noon, when the surveyed markers stand out best (sun-heated and sky-cooled
+        plates) and fix the absolute attitude of the reference.
     atmosphere : bool
         Atmospheric correction (Eq. 4).
     d1_m, d2_m : float
@@ -32,7 +42,12 @@ class ProcessOptions:
     epsilon : float
         Histogram stretching percentile fraction (paper §4.2).
     level : int or None
-        Majority-voting level l; None: half the number of scans.
+        Majority-voting level l (paper §4.4); None: ``level_fraction`` of the images.
+    level_fraction : float
+        Default voting level as a fraction of the N x B images. The paper takes half; on
+        diurnal mosaics a buried mine is contrasted for only part of the day (two zero-
+        contrast periods, weak night contrast), and a quarter detects far more shallow mines
+        at a similar false-alarm rate (``benchmarks/detection_accuracy.py --sweep``).
     gamma : float or None
         Combination threshold; None: binary OR (paper §4.6).
     invert : bool
@@ -43,23 +58,26 @@ class ProcessOptions:
 
     pixel_size_m: float | None = None
     coregister: bool = True
-    max_shift_m: float = 0.3
+    search_m: float = 0.6
+    frame_refine: bool = False
+    max_shift_m: float = 0.1
     max_angle_deg: float = 0.0
     seam_balance: bool = False
-    reference_scan: int = 0
+    reference_scan: int | None = None
     atmosphere: bool = True
     d1_m: float = 0.5
     d2_m: float = 0.06
     epsilon: float = 0.01
     level: int | None = None
+    level_fraction: float = 0.25
     gamma: float | None = None
     invert: bool = True
     max_anomalies: int = 200
 
     def mosaic_key(self) -> str:
         """Hash of the parameters that change the mosaics."""
-        keys = ("pixel_size_m", "coregister", "max_shift_m", "max_angle_deg", "seam_balance",
-                "reference_scan", "atmosphere")
+        keys = ("pixel_size_m", "coregister", "search_m", "frame_refine", "max_shift_m",
+                "max_angle_deg", "seam_balance", "reference_scan", "atmosphere")
         return _digest({k: getattr(self, k) for k in keys})
 
     def detection_key(self) -> str:

@@ -38,7 +38,7 @@ def footprint_polygon(valid: np.ndarray, transform, simplify_m: float):
     return shapely.unary_union(polys).simplify(simplify_m)
 
 
-def _markers_frame(survey, epsg: int):
+def _markers_frame(survey, epsg: int, matches):
     import geopandas as gpd
 
     from clearfast_gis.geometry.gnss import lonlat_to_crs
@@ -46,13 +46,34 @@ def _markers_frame(survey, epsg: int):
 
     crs = f"EPSG:{epsg}"
     if "markers" not in survey.manifest["files"]:
-        return gpd.GeoDataFrame({"marker_id": [], "description": []},
+        return gpd.GeoDataFrame({"marker_id": [], "description": [], "found": [],
+                                 "found_x": [], "found_y": [], "offset_m": []},
                                 geometry=gpd.GeoSeries([], crs=crs), crs=crs)
     m = read_markers(survey.path("markers"), survey.label("markers"))
     x, y = lonlat_to_crs(np.asarray(m.lon_deg), np.asarray(m.lat_deg), epsg)
-    return gpd.GeoDataFrame({"marker_id": [str(i) for i in m.id],
-                             "description": [str(d) for d in m.description]},
+    found = {mm.marker_id: mm for mm in matches}
+    ids = [str(i) for i in m.id]
+
+    def col(attr):
+        return [getattr(found[i], attr) if i in found else None for i in ids]
+
+    return gpd.GeoDataFrame({"marker_id": ids,
+                             "description": [str(d) for d in m.description],
+                             "found": [i in found for i in ids],
+                             "found_x": col("found_x"), "found_y": col("found_y"),
+                             "offset_m": col("offset_m")},
                             geometry=gpd.points_from_xy(x, y), crs=crs)
+
+
+def _marker_rms_m(matches) -> float | None:
+    if not matches:
+        return None
+    return float(np.sqrt(np.mean([m.offset_m ** 2 for m in matches])))
+
+
+def _marker_fact(matches) -> str:
+    rms = _marker_rms_m(matches)
+    return "none found" if rms is None else f"{len(matches)} ({100 * rms:.1f} cm)"
 
 
 def _pick_day_night(times_s: np.ndarray, lon_deg: float) -> tuple[int, int]:
@@ -114,8 +135,9 @@ def write_anomaly_products(products: Path, ctx, survey, anomalies, records: list
         geometry=gpd.GeoSeries([footprint_polygon(valid, transform, 2 * pixel)], crs=crs),
         crs=crs)
     layers = {"anomalies": anomalies_layer, "suspects": suspects,
-              "markers": _markers_frame(survey, epsg), "footprint": footprint}
-    write_geopackage(products / "anomalies.gpkg", layers, default_styles())
+              "markers": _markers_frame(survey, epsg, anomalies.markers), "footprint": footprint}
+    write_geopackage(products / "anomalies.gpkg", layers, default_styles(),
+                     timestamp_s=float(survey.end_s))
 
     # report
     lon = float(survey.manifest["site"]["longitude_deg"])
@@ -166,6 +188,7 @@ def write_anomaly_products(products: Path, ctx, survey, anomalies, records: list
         ("frames co-registered (MI)", f"{applied} of {total}"),
         ("scan-to-reference residual (median / max)",
          f"{np.median(residuals):.2f} / {np.max(residuals):.2f} px" if residuals else "n/a"),
+        ("known markers found (RMS offset)", _marker_fact(anomalies.markers)),
         ("seam balancing", "on (temperatures adjusted)" if options.seam_balance else "off"),
         ("soil diffusivity (thermocouples)",
          f"{anomalies.soil_alpha_m2s:.2e} ± {anomalies.soil_alpha_sigma_m2s:.1e} m²/s"
@@ -176,11 +199,23 @@ def write_anomaly_products(products: Path, ctx, survey, anomalies, records: list
                       curves, facts, warnings, dict(timings), options.as_dict())
     write_report(products, data)
 
+    manifest = base_manifest(survey, epsg, options, scan_records, fixq)
+    manifest["warnings"] = warnings  # input problems processed through (gaps, missing frames)
+    manifest["markers"] = {"found": len(anomalies.markers),
+                           "rms_offset_m": _marker_rms_m(anomalies.markers)}
+    manifest["products"] = {"anomalies": "anomalies.gpkg", "report": "report.html",
+                            "mosaics": "mosaics/"}
+    return manifest
+
+
+def base_manifest(survey, epsg: int, options, scan_records: dict[int, dict], fixq: dict
+                  ) -> dict:
+    """The products manifest common to every stage: inputs, parameters, scans, CRS."""
+    from clearfast_gis.export.manifest import sha256_file
+
     scans = [{"scan": int(s), "time_utc": format_utc(r["time_s"]),
               "file": f"mosaics/scan_{int(s):03d}.tif",
               "residual_px": r.get("residual_px")} for s, r in sorted(scan_records.items())]
-    from clearfast_gis.export.manifest import sha256_file
-
     inputs = {}
     for key in ("survey", "mission", "frames", "blackbody_frames", "blackbody_log", "gnss",
                 "weather", "soil"):
@@ -199,6 +234,4 @@ def write_anomaly_products(products: Path, ctx, survey, anomalies, records: list
                    "lambda_max_um": b.lambda_max_um} for b in survey.bands],
         "scans": scans,
         "fix_quality": fixq,
-        "products": {"anomalies": "anomalies.gpkg", "report": "report.html",
-                     "mosaics": "mosaics/"},
     }

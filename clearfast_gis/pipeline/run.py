@@ -11,6 +11,7 @@ from pathlib import Path
 import numpy as np
 
 from clearfast_gis import __version__
+from clearfast_gis.atomic import atomic_path
 from clearfast_gis.errors import InvalidInput
 from clearfast_gis.export.cog import band_description, read_mosaic, write_cog
 from clearfast_gis.export.manifest import (
@@ -26,8 +27,10 @@ from clearfast_gis.pipeline.anomalies import (
     characterise,
     detect_on_mosaics,
     site_soil,
+    split_markers,
     suspect_records,
 )
+from clearfast_gis.pipeline.attitude import reposed, scan_attitude
 from clearfast_gis.pipeline.frames import (
     SurveyContext,
     first_scan_band_frames,
@@ -35,6 +38,7 @@ from clearfast_gis.pipeline.frames import (
     scan_frames,
 )
 from clearfast_gis.pipeline.options import ProcessOptions
+from clearfast_gis.pipeline.products import base_manifest as _base_manifest
 from clearfast_gis.pipeline.products import write_anomaly_products
 from clearfast_gis.pipeline.state import RunState
 from clearfast_gis.progress import NULL_PROGRESS, Progress
@@ -106,16 +110,66 @@ def open_context(survey_path: str | Path, progress: Progress = NULL_PROGRESS):
         source=survey.label("gnss")))
     weather = read_toa5(survey.path("weather"))
     events = calibration_events(survey)
+    _check_blackbody_pairs(events, survey)
     ctx = SurveyContext(survey, survey.camera, track, events, weather,
                         [ConformalTransform.identity()] * len(survey.bands))
     return ctx, epsg, report
 
 
+MIN_BLACKBODY_DIFFERENCE_K = 1.0
+"""Blackbodies closer than this in temperature give no usable two-point calibration (the
+heated one runs ~10 K above the ambient one), kelvin."""
+
+
+def _check_blackbody_pairs(events, survey) -> None:
+    """Refuse a degenerate blackbody pair (same temperature, or same counts everywhere)."""
+    from clearfast_gis.radiometry.calibration import DEFAULT_MIN_CONTRAST_COUNTS
+
+    for ev in events:
+        when = format_utc(ev.time_s, "seconds")
+        if not abs(ev.t_bb1_k - ev.t_bb2_k) >= MIN_BLACKBODY_DIFFERENCE_K:
+            raise InvalidInput(
+                f"degenerate blackbody pair at {when}: blackbodies 1 and 2 at "
+                f"{ev.t_bb1_k - 273.15:.2f} and {ev.t_bb2_k - 273.15:.2f} C (they must differ "
+                f"by >= {MIN_BLACKBODY_DIFFERENCE_K:g} K)", survey.label("blackbody_log"))
+        contrast = float(np.nanmedian(np.abs(np.asarray(ev.bb1_mean, dtype=float)
+                                             - np.asarray(ev.bb2_mean, dtype=float))))
+        if not contrast >= DEFAULT_MIN_CONTRAST_COUNTS:
+            raise InvalidInput(
+                f"degenerate blackbody pair at {when} band {ev.band}: the images of "
+                f"blackbodies 1 and 2 differ by {contrast:.1f} counts (median), below "
+                f"{DEFAULT_MIN_CONTRAST_COUNTS:g}", survey.label("blackbody_frames"))
+
+
 def _scan_order(scans: np.ndarray, reference: int) -> list[int]:
-    scans = [int(s) for s in scans]
+    """Processing order: the reference, then outwards (later scans, then earlier ones), so
+    each scan starts from the attitude of its processed neighbour."""
+    scans = sorted(int(s) for s in scans)
     if reference not in scans:
         raise InvalidInput(f"reference scan {reference} is not in the survey", field="scans")
-    return [reference] + [s for s in scans if s != reference]
+    k = scans.index(reference)
+    return [reference] + scans[k + 1:] + scans[:k][::-1]
+
+
+def _neighbour(scan: int, done: dict[int, tuple]) -> tuple:
+    """Attitude of the processed scan nearest ``scan`` (zero attitude if none)."""
+    if not done:
+        return (0.0, 0.0, 0.0)
+    return done[min(done, key=lambda s: abs(s - scan))]
+
+
+def _reference_scan(survey, options: ProcessOptions) -> int:
+    """The reference scan: the option, or the scan nearest local solar noon."""
+    if options.reference_scan is not None:
+        return int(options.reference_scan)
+    from clearfast_gis.thermal import sun_times
+
+    site = survey.manifest["site"]
+    scans = sorted(int(s) for s in survey.scans)
+    times = np.array([_scan_time(survey, s)[1] for s in scans])
+    noon = np.array([sun_times(float(site["latitude_deg"]), float(site["longitude_deg"]),
+                               float(t))[1] for t in times])
+    return scans[int(np.argmin(np.abs(times - noon)))]
 
 
 def _grid(ctx: SurveyContext, epsg: int, pixel_size_m: float, reference: int):
@@ -140,12 +194,6 @@ def _grid(ctx: SurveyContext, epsg: int, pixel_size_m: float, reference: int):
 
 def _correction_dict(c: FrameCorrection) -> dict:
     return dataclasses.asdict(c) | {"metric": None if math.isnan(c.metric) else c.metric}
-
-
-def _correction_from(d: dict) -> FrameCorrection:
-    d = dict(d)
-    d["metric"] = math.nan if d.get("metric") is None else d["metric"]
-    return FrameCorrection(**d)
 
 
 def _air_function(ctx: SurveyContext):
@@ -174,7 +222,7 @@ def _band_offsets(ctx: SurveyContext, state: RunState, reference: int, progress:
 
 def process_survey(survey_path: str | Path, products: str | Path,
                    options: ProcessOptions | None = None, resume: bool = True,
-                   progress: Progress = NULL_PROGRESS) -> dict:
+                   progress: Progress = NULL_PROGRESS, until: str = "products") -> dict:
     """Run the chain from a survey folder to a products folder.
 
     Parameters
@@ -188,12 +236,16 @@ def process_survey(survey_path: str | Path, products: str | Path,
     resume : bool
         Keep finished, unchanged stages of an earlier run of the same inputs and parameters.
     progress : Progress
+    until : {"products", "mosaics"}
+        Stop after the scan mosaics (``clearfast mosaic``) or run the whole chain.
 
     Returns
     -------
     dict
         The products manifest (``products.json`` content).
     """
+    if until not in ("products", "mosaics"):
+        raise ValueError(f"unknown stage {until!r}")
     options = ProcessOptions() if options is None else options
     t_all = time.perf_counter()
     products = Path(products)
@@ -206,7 +258,7 @@ def process_survey(survey_path: str | Path, products: str | Path,
     state = RunState(products, key if resume else key + f"-fresh-{time.time_ns()}")
     if not resume:
         state.units = {}
-    ref = int(options.reference_scan)
+    ref = _reference_scan(survey, options)
     order = _scan_order(survey.scans, ref)
 
     t0 = time.perf_counter()
@@ -222,7 +274,8 @@ def process_survey(survey_path: str | Path, products: str | Path,
     n_pos = len(survey.positions)
     progress.start("mosaics", len(order) * n_pos)
     reference_values = None
-    predicted = None
+    attitudes: dict[int, tuple] = {}
+    _, marker_xy = _survey_markers(survey, epsg)
     scan_records: dict[int, dict] = {}
     for scan in order:
         unit = f"scan_{scan:03d}"
@@ -230,13 +283,24 @@ def process_survey(survey_path: str | Path, products: str | Path,
         rec = state.done(unit)
         if rec is not None:
             progress.advance(n_pos, scan=scan, resumed=True)
-            corrections = {int(k): _correction_from(v) for k, v in rec["corrections"].items()}
+            if rec.get("attitude"):
+                attitudes[scan] = tuple(rec["attitude"]["attitude_rpy_deg"])
         else:
             t_scan = time.perf_counter()
-            frames = scan_frames(ctx, scan, air_at, atmosphere=options.atmosphere)
-            m = build_scan_mosaic(frames, ctx.camera, grid, len(survey.bands),
-                                  coregister=options.coregister, reference=reference_values,
-                                  predicted=predicted, max_shift_m=options.max_shift_m,
+            frames = list(scan_frames(ctx, scan, air_at, atmosphere=options.atmosphere))
+            fit = None
+            attitude = _neighbour(scan, attitudes)
+            if options.coregister:
+                fit = scan_attitude(frames, ctx.camera, grid, len(survey.bands),
+                                    reference_values, marker_xy, attitude,
+                                    search_m=options.search_m)
+                attitude = fit.attitude_rpy_deg
+            attitudes[scan] = attitude
+            m = build_scan_mosaic(reposed(frames, attitude), ctx.camera, grid,
+                                  len(survey.bands),
+                                  coregister=options.coregister and options.frame_refine,
+                                  reference=reference_values,
+                                  max_shift_m=options.max_shift_m,
                                   max_angle_deg=options.max_angle_deg,
                                   seam_balance=options.seam_balance, progress=progress)
             t_start, t_mean = _scan_time(survey, scan)
@@ -249,25 +313,37 @@ def process_survey(survey_path: str | Path, products: str | Path,
                             "CLEARFAST_SCAN": scan,
                             "CLEARFAST_SEAM_BALANCE": options.seam_balance},
                       scan_time_s=t_mean)
-            np.save(_source_path(products, scan), m.source)
-            corrections = m.corrections
+            with atomic_path(_source_path(products, scan)) as tmp, open(tmp, "wb") as fh:
+                np.save(fh, m.source)
             rec = {"scan": scan, "time_s": t_mean, "start_s": t_start,
-                   "corrections": {str(k): _correction_dict(v) for k, v in corrections.items()},
+                   "attitude": None if fit is None else fit.as_dict(),
+                   "corrections": {str(k): _correction_dict(v)
+                                   for k, v in m.corrections.items()},
                    "residual_px": residual, "seconds": time.perf_counter() - t_scan,
                    "seam_gains": {str(k): list(v) for k, v in m.seam_gains.items()}}
             state.finish(unit, rec, [rel])
         scan_records[scan] = rec
         if scan == ref:
             reference_values = read_mosaic(products / rel).bands_c
-        predicted = corrections
     progress.close()
     timings["mosaics"] = time.perf_counter() - t0
 
-    manifest = _anomaly_stage(ctx, survey, products, options, state, scan_records, epsg,
-                              grid, report, timings, progress)
+    finished = state.done("products") if until == "products" else None
+    if finished is not None and finished.get("key") == options.detection_key():
+        return read_products_manifest(products)  # a finished run: nothing left to do
+    if until == "mosaics":
+        manifest = _base_manifest(survey, epsg, options, scan_records,
+                                  _fix_quality_summary(ctx))
+        manifest["products"] = {"mosaics": "mosaics/"}
+    else:
+        manifest = _anomaly_stage(ctx, survey, products, options, state, scan_records, epsg,
+                                  grid, report, timings, progress)
     timings["total"] = time.perf_counter() - t_all
     manifest["timings_s"] = {k: round(v, 3) for k, v in timings.items()}
     write_products_manifest(products, manifest)
+    if until == "products":
+        state.finish("products", {"key": options.detection_key()},
+                     ["products.json", "anomalies.gpkg", "report.html"])
     return manifest
 
 
@@ -293,6 +369,11 @@ def _anomaly_stage(ctx, survey, products: Path, options: ProcessOptions, state: 
     from clearfast_gis.survey import read_soil_log
     from clearfast_gis.thermal import forcing_from_weather
 
+    done = state.done("anomalies")
+    if done is not None and done.get("key") == options.detection_key() \
+            and (products / "products.json").exists():
+        progress.message("anomalies: up to date, kept")
+        return read_products_manifest(products)
     scans = sorted(scan_records)
     times = np.array([scan_records[s]["time_s"] for s in scans])
     lon = float(survey.manifest["site"]["longitude_deg"])
@@ -301,7 +382,10 @@ def _anomaly_stage(ctx, survey, products: Path, options: ProcessOptions, state: 
     labels, feats = detect_on_mosaics(stack, times, first.transform, grid.pixel_size, lon,
                                       options.d1_m, options.d2_m, options.epsilon,
                                       options.level, options.gamma, options.max_anomalies,
+                                      level_fraction=options.level_fraction,
                                       progress=progress)
+    marker_ids, marker_xy = _survey_markers(survey, epsg)
+    feats, marker_matches = split_markers(feats, marker_ids, marker_xy)
     timings["detection"] = time.perf_counter() - t0
     t0 = time.perf_counter()
     notes: list[str] = []
@@ -316,7 +400,7 @@ def _anomaly_stage(ctx, survey, products: Path, options: ProcessOptions, state: 
     elif not options.invert:
         notes.append("thermal characterisation switched off")
     timings["characterisation"] = time.perf_counter() - t0
-    anomalies = AnomalySet(labels, feats, inversions, alpha, sigma, notes)
+    anomalies = AnomalySet(labels, feats, inversions, alpha, sigma, notes, marker_matches)
     fixq = _fix_quality_summary(ctx)
     code = survey.manifest["survey_id"]
     records = suspect_records(anomalies, times, lon, fixq["worst_during_frames"], code)
@@ -326,8 +410,20 @@ def _anomaly_stage(ctx, survey, products: Path, options: ProcessOptions, state: 
                                       fixq, timings)
     timings["products"] = time.perf_counter() - t0
     state.finish("anomalies", {"n": len(records), "key": options.detection_key()},
-                 ["anomalies.gpkg"])
+                 ["anomalies.gpkg", "report.html"])
     return manifest
+
+
+def _survey_markers(survey, epsg: int) -> tuple[list[str], np.ndarray]:
+    """Surveyed markers in the survey CRS: ids and (M, 2) positions."""
+    from clearfast_gis.geometry.gnss import lonlat_to_crs
+    from clearfast_gis.survey import read_markers
+
+    if "markers" not in survey.manifest["files"]:
+        return [], np.zeros((0, 2))
+    m = read_markers(survey.path("markers"), survey.label("markers"))
+    x, y = lonlat_to_crs(np.asarray(m.lon_deg, float), np.asarray(m.lat_deg, float), epsg)
+    return [str(i) for i in m.id], np.column_stack([x, y])
 
 
 def _fix_quality_summary(ctx: SurveyContext) -> dict:

@@ -93,3 +93,4 @@ def n_levels_for(shape: tuple[int, int], coarsest_px: int = 96, min_px: int = 24
         h, w = (h + 1) // 2, (w + 1) // 2
         levels += 1
     return levels
+

@@ -3,22 +3,35 @@
 from __future__ import annotations
 
 import io
+import warnings
 from collections.abc import Sequence
 
 import matplotlib
-
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt
 import numpy as np
 from affine import Affine
 
 from clearfast_gis.timeutil import format_utc
 
+matplotlib.use("Agg")
+
+
+def _pyplot():
+    """matplotlib.pyplot, imported on first use.
+
+    A venv that also sees Debian's packages (the QGIS set-up) finds Debian's mpl_toolkits
+    beside its own matplotlib, which makes pyplot warn that the (unused) 3-D projection is
+    unavailable; the warning is silenced here.
+    """
+    with warnings.catch_warnings():
+        warnings.filterwarnings("ignore", message="Unable to import Axes3D")
+        import matplotlib.pyplot as plt
+    return plt
+
 
 def _png(fig) -> bytes:
     buf = io.BytesIO()
     fig.savefig(buf, format="png", dpi=110, bbox_inches="tight")
-    plt.close(fig)
+    _pyplot().close(fig)
     return buf.getvalue()
 
 
@@ -48,7 +61,7 @@ def mosaic_panel_png(mosaics: Sequence[np.ndarray], times_s: Sequence[float],
     epsg : int
         Survey CRS, for the axis labels.
     """
-    fig, axes = plt.subplots(1, 3, figsize=(15, 5.2), sharex=True, sharey=True)
+    fig, axes = _pyplot().subplots(1, 3, figsize=(15, 5.2), sharex=True, sharey=True)
     ext = _extent(transform, mosaics[0].shape)
     for ax, m, t in ((axes[0], mosaics[0], times_s[0]), (axes[2], mosaics[1], times_s[1])):
         finite = m[np.isfinite(m)]
@@ -77,7 +90,7 @@ def contrast_curve_png(times_s: np.ndarray, contrast_k: np.ndarray,
                        model_times_s: np.ndarray | None, model_k: np.ndarray | None,
                        title: str) -> bytes:
     """One anomaly's centre-minus-background contrast over the scans, with the model fit."""
-    fig, ax = plt.subplots(figsize=(5.2, 3.0))
+    fig, ax = _pyplot().subplots(figsize=(5.2, 3.0))
     t0 = float(times_s[0])
     hours = (np.asarray(times_s) - t0) / 3600.0
     ax.plot(hours, contrast_k, "o", ms=3.5, color="#c0392b", label="measured")

@@ -63,7 +63,7 @@ def footprint_m(range_m: np.ndarray, ray_z: np.ndarray, ifov_rad: float) -> np.n
     Across the line of sight the footprint is ``R ifov``; along it, ``R ifov / sin(grazing)``.
     """
     sin_graze = np.clip(np.abs(ray_z), 0.05, 1.0)
-    return range_m * ifov_rad / np.sqrt(sin_graze)
+    return range_m * np.float32(ifov_rad) / np.sqrt(sin_graze)
 
 
 def surface_radiance_frame(rays: FrameRays, pose: CameraPose, rgrid: RadianceGrid,
@@ -87,16 +87,19 @@ def surface_radiance_frame(rays: FrameRays, pose: CameraPose, rgrid: RadianceGri
     range_m : float32 (H, W)
         Slant range camera-ground, metres (0 where the ray misses the ground).
     """
-    dx, dy, dz = rays.directions(pose)
+    dx, dy, dz = (d.astype(np.float32) for d in rays.directions(pose))
     hit = dz < -1e-6
-    with np.errstate(invalid="ignore", divide="ignore"):
-        t = np.where(hit, -pose.position_m[2] / np.where(hit, dz, -1.0), 0.0)
+    t = np.where(hit, np.float32(-pose.position_m[2]) / np.where(hit, dz, np.float32(-1.0)),
+                 np.float32(0.0))
     grid = rgrid.grid
-    inv = 1.0 / grid.pixel_size
-    map_x = ((pose.position_m[0] + t * dx - grid.x0) * inv - 0.5).astype(np.float32)
-    map_y = ((grid.y0 - pose.position_m[1] - t * dy) * inv - 0.5).astype(np.float32)
+    inv = np.float32(1.0 / grid.pixel_size)
+    # offsets from the grid corner in float64 first (UTM coordinates), then float32 per pixel
+    cx = np.float32((pose.position_m[0] - grid.x0) / grid.pixel_size - 0.5)
+    cy = np.float32((grid.y0 - pose.position_m[1]) / grid.pixel_size - 0.5)
+    map_x = cx + (t * dx) * inv
+    map_y = cy - (t * dy) * inv
     # the pixel's box footprint matches a Gaussian of sigma ~ 0.4 footprint
-    want = (0.4 * inv) * footprint_m(t, dz, ifov_rad)
+    want = (np.float32(0.4) * inv) * footprint_m(t, dz, ifov_rad)
     sig = np.asarray(BLUR_SIGMAS_CELLS)
     level = np.digitize(want, 0.5 * (sig[1:] + sig[:-1]))
     k_lo, k_hi = int(level.min()), int(level.max())
@@ -109,7 +112,7 @@ def surface_radiance_frame(rays: FrameRays, pose: CameraPose, rgrid: RadianceGri
                                borderMode=cv2.BORDER_REPLICATE)
             out[sel] = sample[sel]
     out[~hit] = rgrid.sky_radiance
-    return out, t.astype(np.float32)
+    return out, t
 
 
 def at_camera_radiance(surface_radiance: np.ndarray, range_m: np.ndarray, atmos: Atmosphere,

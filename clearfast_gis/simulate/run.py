@@ -82,9 +82,10 @@ BB_FRAME_S = 0.5
 PINHOLE_DISTORTION = (-0.06, 0.01, 0.0, 0.0, 0.0)
 
 
-def stream(seed: int, name: str) -> np.random.Generator:
-    """The random generator of the named stream for ``seed``."""
-    return np.random.default_rng([int(seed), STREAMS[name]])
+def stream(seed: int, name: str, index: int | None = None) -> np.random.Generator:
+    """The random generator of the named stream for ``seed`` (and scan ``index``)."""
+    key = [int(seed), STREAMS[name]] + ([] if index is None else [int(index)])
+    return np.random.default_rng(key)
 
 
 @dataclass
@@ -219,9 +220,14 @@ def simulate_survey(out_dir: str | Path, config: SimConfig, seed: int = 0, drift
     timings: dict[str, float] = {}
     t_stage = clock()
     root = Path(out_dir)
+    if root.exists() and not root.is_dir():
+        raise InvalidInput("output exists and is not a folder", root)
     if root.exists() and any(root.iterdir()):
         if not overwrite:
             raise InvalidInput("output folder exists and is not empty (use --overwrite)", root)
+        if not (root / "survey.json").exists() and not (root / "truth").is_dir():
+            raise InvalidInput("will not overwrite a folder that is not a simulated survey",
+                               root)
         shutil.rmtree(root)
     root.mkdir(parents=True, exist_ok=True)
 
@@ -283,7 +289,6 @@ def simulate_survey(out_dir: str | Path, config: SimConfig, seed: int = 0, drift
     bb1_k, bb2_k = instruments.blackbody_truth_k(t_min, air_min)
     pressure = instruments.station_pressure_hpa(t_min, config.ground_altitude_m)
 
-    noise = stream(seed, "noise")
     frame_rows: dict[str, list] = {k: [] for k in ("scan", "position", "band", "time_s",
                                                    "pan_deg", "tilt_deg", "file", "page")}
     bb_rows: dict[str, list] = {k: [] for k in ("event", "blackbody", "band", "time_s", "file",
@@ -294,6 +299,7 @@ def simulate_survey(out_dir: str | Path, config: SimConfig, seed: int = 0, drift
     (root / "truth" / "apparent_temperature").mkdir(parents=True, exist_ok=True)
     for s in range(config.n_scans):
         t0 = clock()
+        noise = stream(seed, "noise", s)  # per scan: independent of the order of work
         temp_k = surface_temperature_k(fields_, truth_t, s)
         fs = forcing_at(forcing, np.array([scan_mid[s]]))
         rgrids = []

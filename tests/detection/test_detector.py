@@ -9,10 +9,10 @@ from clearfast_gis.detection import (
     detect_anomalies,
     features_table,
     local_solar_hour,
-    solar_elevation_deg,
     summary_polarity,
 )
 from clearfast_gis.detection.stretch import stretch_limits, stretch_threshold
+from clearfast_gis.thermal.solar import solar_position
 
 T0 = 1763164800.0  # 2025-11-15T00:00:00Z
 H, W, N = 160, 200, 12
@@ -123,8 +123,12 @@ def test_solar_time_and_elevation():
     assert local_solar_hour(t, 30.0) == pytest.approx(14.0 + 15.4 / 60, abs=0.05)
     # noon elevation at 35 N in mid-November: 90 - 35 - 18.5 = 36.5 deg
     noon = T0 + (12 - 15.4 / 60 - 33.36 / 15) * 3600.0
-    assert solar_elevation_deg(noon, 35.0, 33.36) == pytest.approx(36.5, abs=0.5)
-    assert solar_elevation_deg(T0, 35.0, 33.36) < 0  # 02:13 local: night
+    assert solar_position(35.0, 33.36, noon)[0] == pytest.approx(36.5, abs=0.5)
+    assert solar_position(35.0, 33.36, T0)[0] < 0  # 02:13 local: night
+    # continuous over UTC midnight (up to the day-to-day change of the equation of time)
+    hours = local_solar_hour(T0 + np.array([-60.0, 60.0]), 0.0)
+    assert hours[1] - hours[0] == pytest.approx(2 / 60, abs=0.01)
+    assert np.all((hours >= 0) & (hours < 24))
 
 
 def test_summary_polarity_rules():

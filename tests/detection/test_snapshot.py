@@ -13,6 +13,7 @@ from click.testing import CliRunner
 from clearfast_gis.cli.detect_images import COLUMNS, command
 from clearfast_gis.detection import detect_snapshot
 from clearfast_gis.detection.imageio import read_image
+from clearfast_gis.detection.multiscale import detect_snapshot_multiscale
 from clearfast_gis.errors import InvalidInput
 
 COLOMBIA = Path(__file__).resolve().parents[2] / ".." / "shared" / "data" / \
@@ -45,7 +46,8 @@ def test_cli_writes_csv(tmp_path):
     tif = tmp_path / "b.tif"
     tifffile.imwrite(tif, img)
     out = tmp_path / "det.csv"
-    res = CliRunner().invoke(command, [str(png), str(tif), "-o", str(out), "--d1-px", "25",
+    res = CliRunner().invoke(command, [str(png), str(tif), "-o", str(out), "--mode", "single",
+                                       "--d1-px", "25",
                                        "--d2-px", "3", "--epsilon", "0.002", "--scale", "1",
                                        "--smooth-px", "0", "--progress", "none"])
     assert res.exit_code == 0, res.output
@@ -55,6 +57,17 @@ def test_cli_writes_csv(tmp_path):
         best = [r for r in rows if r["image"] == name][0]
         assert float(best["x_px"]) == pytest.approx(50.0, abs=0.5)
         assert float(best["y_px"]) == pytest.approx(40.0, abs=0.5)
+    # multi-scale (default mode), altitude read from the name: same best blob
+    named = tmp_path / "c__0-5m_x.png"
+    named.write_bytes(png.read_bytes())
+    res = CliRunner().invoke(command, [str(named), "-o", str(out), "--altitude-from-name",
+                                       "--px-at-1m", "6", "--progress", "none"])
+    assert res.exit_code == 0, res.output
+    rows = list(csv.DictReader(out.open()))
+    assert (float(rows[0]["x_px"]), float(rows[0]["y_px"])) == pytest.approx((50, 40), abs=1.5)
+    assert rows[0]["polarity"] == "warm" and 3.0 <= float(rows[0]["scale_px"]) <= 35.0
+    res = CliRunner().invoke(command, [str(named), "-o", str(out), "--min-diameter-px", "1"])
+    assert getattr(res.exception, "exit_code", None) == 2  # usage error
 
 
 def test_bad_image_is_one_line_error(tmp_path):
@@ -86,11 +99,13 @@ def test_real_snapshots_find_the_mine():
                 _, cx, cy, w, h = map(float, line.split())
                 boxes.append(((cx - w / 2) * 640, (cy - h / 2) * 640,
                               (cx + w / 2) * 640, (cy + h / 2) * 640))
-        dets = detect_snapshot(read_image(f), 41, 5, 0.01, smooth_px=3.0, scale=2)
-        top = dets[:3]
-        hit = [d for d in top for b in boxes
-               if b[0] <= d.x_px <= b[2] and b[1] <= d.y_px <= b[3]]
-        if hit:
-            found += 1
-            assert hit[0].score > 1.0
-    assert found >= len(files) - 1
+        image = read_image(f)
+        for dets in (detect_snapshot(image, 41, 5, 0.01, smooth_px=3.0, scale=2),
+                     detect_snapshot_multiscale(image)):
+            top = dets[:3]
+            hit = [d for d in top for b in boxes
+                   if b[0] <= d.x_px <= b[2] and b[1] <= d.y_px <= b[3]]
+            if hit:
+                found += 1
+                assert hit[0].score > 1.0
+    assert found >= 2 * len(files) - 2

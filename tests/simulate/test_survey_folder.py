@@ -94,3 +94,37 @@ def test_truth_files(demo_survey):
     frames = sv.frames
     np.testing.assert_allclose(np.array([parse_utc(p["time_utc"]) for p in poses]),
                                np.sort(frames.time_s), atol=1e-3)
+
+
+def test_cli_refuses_foreign_folder_and_bad_scenario(tmp_path):
+    from click.testing import CliRunner
+
+    from clearfast_gis.cli.main import group
+
+    other = tmp_path / "notes"
+    other.mkdir()
+    (other / "keep.txt").write_text("x")
+    runner = CliRunner()
+    res = runner.invoke(group, ["simulate", str(other), "--overwrite", "--progress", "none"])
+    assert res.exit_code == 1 and (other / "keep.txt").exists()
+    assert "not a simulated survey" in str(res.exception)
+    bad = tmp_path / "s.json"
+    bad.write_text('{"format": "clearfast-scenario", "format_version": 1, "n_scans": -1}')
+    res = runner.invoke(group, ["simulate", str(tmp_path / "o"), "--scenario", str(bad)])
+    assert res.exit_code == 1 and res.exception.field == "n_scans"
+
+
+def test_cli_error_is_one_line(tmp_path):
+    import subprocess
+    import sys
+
+    bad = tmp_path / "scenario.json"
+    bad.write_text('{"format": "clearfast-scenario", "format_version": 1, '
+                   '"objects": [{"kind": "bomb", "x_m": 1, "y_m": 1}]}')
+    proc = subprocess.run([sys.executable, "-m", "clearfast_gis.cli.main", "simulate",
+                           str(tmp_path / "out"), "--scenario", str(bad)],
+                          capture_output=True, text=True, timeout=120)
+    assert proc.returncode == 1
+    lines = proc.stderr.strip().splitlines()
+    assert len(lines) == 1
+    assert lines[0].startswith("clearfast: error: ") and "objects.0.kind: expected" in lines[0]

@@ -1,0 +1,205 @@
+"""Weather station logging: Campbell Scientific TOA5 data lines in, ``weather.dat`` (TOA5) out.
+
+Assumed input: the station's datalogger (CR1000X or alike, clock on UTC) sends each 1-minute
+record of its table as one TOA5 data line on its serial port, the way ``TOA5`` files hold
+them: ``"2026-11-15 00:01:00",42,15.21,60.3,1005.2,2.10,0,301.5,0``. Columns are found by
+name when the station also sends the TOA5 header lines (the ``"TIMESTAMP","RECORD",...``
+field-name line sets the column order; the environment, units and processing lines are
+skipped); otherwise the columns are taken in the order of ``docs/contracts.md`` §2:
+``TIMESTAMP,RECORD,AirTC_Avg,RH_Avg,BP_hPa_Avg,WS_ms_Avg,SlrW_Avg,IRSky_Avg,Rain_mm_Tot``
+(the last two may be absent). ``NAN`` marks a missing value.
+
+Output: ``weather.dat`` in TOA5 exactly as :func:`clearfast_gis.survey.write_toa5` writes it,
+header written once when the file is new; the station's record number is kept (or counted
+on from the file's last record when the station sends none). Lines that are not a valid
+record are counted, not written.
+"""
+
+from __future__ import annotations
+
+import csv
+import math
+import os
+import time
+from collections.abc import Callable
+
+import numpy as np
+import serial
+
+from clearfast_gis.acquire.appendlog import AppendLog
+from clearfast_gis.acquire.linelogger import LineLogger
+from clearfast_gis.errors import InvalidInput
+from clearfast_gis.survey.toa5 import COLUMNS, WeatherLog, toa5_text
+from clearfast_gis.timeutil import format_utc, parse_utc
+
+#: input column order assumed until the station sends a TOA5 field-name line
+DEFAULT_INPUT_COLUMNS = ("TIMESTAMP", "RECORD", *COLUMNS)
+
+
+def _empty_log() -> WeatherLog:
+    e = np.empty(0)
+    return WeatherLog(e, e, e, e, e, e, e, e)
+
+
+def toa5_header(station: str = "clearfast") -> str:
+    """The four TOA5 header lines ``weather.dat`` starts with (CR LF line endings)."""
+    return toa5_text(_empty_log(), station)
+
+
+def toa5_record_line(time_s: float, record: int, values: dict[str, float]) -> str:
+    """One TOA5 data line (CR LF ended) in the format of :func:`clearfast_gis.survey.write_toa5`.
+
+    Parameters
+    ----------
+    time_s : float
+        UTC epoch seconds of the record.
+    record : int
+        Record number.
+    values : dict
+        TOA5 column name -> value in the contract's units (NaN or absent = ``"NAN"``).
+    """
+    one = np.array([float(time_s)])
+    attrs = {attr: np.array([values.get(col, math.nan)]) for col, (attr, _, _) in COLUMNS.items()}
+    line = toa5_text(WeatherLog(time_s=one, **attrs)).split("\r\n")[4]
+    ts, _, rest = line.split(",", 2)
+    return f"{ts},{int(record)},{rest}\r\n"
+
+
+def _float(text: str) -> float:
+    t = text.strip().strip('"')
+    if t.upper() in ("NAN", "", "-NAN", "NA"):
+        return math.nan
+    v = float(t)
+    if math.isinf(v):
+        raise ValueError("infinite")
+    return v
+
+
+class WeatherStationLogger(LineLogger):
+    """Logs TOA5 records from a weather station to ``weather.dat``.
+
+    Parameters
+    ----------
+    port : serial.SerialBase
+        Open pyserial port.
+    path : path
+        ``<survey>/weather.dat``; appended to if it exists (it must then be a TOA5 file with
+        the same columns).
+    station : str
+        Station name written in the TOA5 environment line of a new file.
+    clock : callable
+        Host UTC clock, epoch seconds (for the age of the last record).
+    fsync_interval_s : float
+        Seconds between fsyncs.
+
+    Raises
+    ------
+    InvalidInput
+        When an existing ``path`` is not a TOA5 file with the expected columns.
+    """
+
+    kind = "weather"
+
+    def __init__(self, port: serial.SerialBase, path: str | os.PathLike,
+                 station: str = "clearfast", clock: Callable[[], float] = time.time,
+                 fsync_interval_s: float = 5.0) -> None:
+        header = toa5_header(station)
+        _check_existing(path, header)
+        super().__init__(port, AppendLog(path, header.encode("ascii"), fsync_interval_s))
+        self._next_record = _next_record(self.log.read_existing())
+        self._columns = list(DEFAULT_INPUT_COLUMNS)
+        self._clock = clock
+        self.n_records = 0
+        self.n_bad = 0
+        self.last: dict[str, float] | None = None
+
+    def handle_lines(self, lines: list[bytes]) -> list[bytes]:
+        out: list[bytes] = []
+        for raw in lines:
+            text = raw.decode("utf-8", "replace").strip()
+            if not text:
+                continue
+            line = self._record(text)
+            if line is not None:
+                out.append(line.encode("ascii"))
+        return out
+
+    def _record(self, text: str) -> str | None:
+        try:
+            fields = next(csv.reader([text]))
+        except (csv.Error, StopIteration):
+            self.n_bad += 1
+            return None
+        first = fields[0].strip() if fields else ""
+        if first == "TIMESTAMP":
+            self._columns = [f.strip() for f in fields]
+            return None
+        if first in ("TOA5", "TS", ""):
+            return None  # environment, units and processing lines of a TOA5 header
+        pos = {name: i for i, name in enumerate(self._columns)}
+        try:
+            time_s = parse_utc(fields[pos["TIMESTAMP"]])
+            values = {}
+            for col, (_, _, required) in COLUMNS.items():
+                i = pos.get(col)
+                if i is None or i >= len(fields):
+                    if required:
+                        raise ValueError(f"missing {col}")
+                    continue
+                values[col] = _float(fields[i])
+            record = self._next_record
+            if "RECORD" in pos and pos["RECORD"] < len(fields) and fields[pos["RECORD"]].strip():
+                record = int(fields[pos["RECORD"]].strip().strip('"'))
+        except (ValueError, KeyError, IndexError, OverflowError, OSError):
+            self.n_bad += 1
+            return None
+        self._next_record = record + 1
+        self.n_records += 1
+        self.last = {"time_s": time_s, **values}
+        return toa5_record_line(time_s, record, values)
+
+    def status(self) -> dict:
+        out = super().status()
+        out.update(records=self.n_records, bad=self.n_bad)
+        if self.last is not None:
+            out["last"] = {"time_utc": format_utc(self.last["time_s"], "seconds"),
+                           **{k: (None if math.isnan(v) else v)
+                              for k, v in self.last.items() if k != "time_s"}}
+        return out
+
+    def status_text(self) -> str:
+        """Short status for a one-line display."""
+        air = ""
+        if self.last is not None and math.isfinite(self.last.get("AirTC_Avg", math.nan)):
+            air = f" air {self.last['AirTC_Avg']:.1f} C"
+        bad = f" ({self.n_bad} bad)" if self.n_bad else ""
+        return f"weather {self.n_records} records{bad}{air}"
+
+
+def _check_existing(path: str | os.PathLike, header: str) -> None:
+    """Refuse to append to a non-empty file that is not our TOA5 table."""
+    try:
+        with open(path, "rb") as fh:
+            head = fh.read(4096).decode("utf-8", "replace").splitlines()
+    except FileNotFoundError:
+        return
+    except OSError as exc:
+        raise InvalidInput(f"cannot read: {exc.strerror or exc}", str(path)) from None
+    if not head:
+        return
+    names = header.splitlines()[1]
+    if not head[0].startswith('"TOA5"'):
+        raise InvalidInput("exists and is not a TOA5 file; not appending to it", str(path),
+                           "line 1")
+    if len(head) < 2 or head[1].strip() != names:
+        raise InvalidInput(f"exists with other columns; expected {names}", str(path), "line 2")
+
+
+def _next_record(content: bytes) -> int:
+    """The record number after the last data line of a TOA5 file's content (0 if none)."""
+    lines = [x for x in content.decode("utf-8", "replace").splitlines() if x.strip()][4:]
+    for line in reversed(lines):
+        fields = line.split(",")
+        if len(fields) > 1 and fields[1].strip().lstrip("-").isdigit():
+            return int(fields[1]) + 1
+    return 0

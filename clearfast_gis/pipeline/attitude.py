@@ -1,0 +1,119 @@
+"""Per-scan platform attitude from the reference scan and the surveyed markers."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from clearfast_gis.geometry.grid import GroundGrid
+from clearfast_gis.mosaic import FrameInput, build_scan_mosaic, project_frame
+from clearfast_gis.mosaic.attitude import GroundTie, fit_attitude, with_attitude
+from clearfast_gis.mosaic.coregister import coregister_projected
+from clearfast_gis.mosaic.markers import locate_marker
+
+MARKER_WEIGHT = 5.0
+"""Weight of a marker tie relative to an image-registration tie (markers are surveyed)."""
+
+
+@dataclass(frozen=True)
+class AttitudeFit:
+    """The attitude chosen for a scan and the evidence behind it.
+
+    Attributes
+    ----------
+    attitude_rpy_deg : (roll, pitch, yaw), degrees
+    n_marker_ties, n_image_ties, n_used : int
+        Ties measured on markers and by registration, and inliers of the fit.
+    rms_m : float
+        Weighted RMS residual of the ties, metres (NaN without a fit).
+    """
+
+    attitude_rpy_deg: tuple[float, float, float]
+    n_marker_ties: int
+    n_image_ties: int
+    n_used: int
+    rms_m: float
+
+    def as_dict(self) -> dict:
+        return {"attitude_rpy_deg": list(self.attitude_rpy_deg),
+                "n_marker_ties": self.n_marker_ties, "n_image_ties": self.n_image_ties,
+                "n_used": self.n_used,
+                "rms_m": None if not np.isfinite(self.rms_m) else self.rms_m}
+
+
+def reposed(frames: list[FrameInput], attitude_rpy_deg) -> list[FrameInput]:
+    """The frames with every pose given ``attitude_rpy_deg``."""
+    return [FrameInput(f.index, f.values, with_attitude(f.pose, attitude_rpy_deg))
+            for f in frames]
+
+
+def scan_attitude(frames: list[FrameInput], camera, grid: GroundGrid, n_bands: int,
+                  reference: np.ndarray | None, marker_xy: np.ndarray,
+                  init_rpy_deg=(0.0, 0.0, 0.0), search_m: float = 0.6,
+                  n_samples: int = 40) -> AttitudeFit:
+    """Fit the platform attitude of one scan.
+
+    Parameters
+    ----------
+    frames : list of FrameInput
+        The scan's calibrated frames with their geometric poses.
+    camera : camera model
+    grid : GroundGrid
+        The mosaic grid.
+    n_bands : int
+    reference : float32 (B, H, W) or None
+        The reference scan's mosaic (None for the reference scan itself).
+    marker_xy : float (M, 2)
+        Surveyed markers, survey CRS metres.
+    init_rpy_deg : (roll, pitch, yaw)
+        Starting attitude (the previous scan's).
+    search_m : float
+        Largest displacement searched per frame registration, metres.
+    n_samples : int
+        Frames registered against the reference (spread over the scan pattern).
+
+    Returns
+    -------
+    AttitudeFit
+    """
+    init = tuple(float(a) for a in init_rpy_deg)
+    placed = reposed(frames, init)
+    ties: list[GroundTie] = []
+    n_marker = n_image = 0
+    if len(marker_xy):
+        m0 = build_scan_mosaic(placed, camera, grid, n_bands, coregister=False)
+        index_of = {f.index: i for i, f in enumerate(placed)}
+        for x, y in marker_xy:
+            found = locate_marker(m0.values[0], grid, float(x), float(y))
+            if found is None:
+                continue
+            r, c = grid.rowcol(np.array([found[0]]), np.array([found[1]]))
+            rr, cc = int(round(float(r[0]))), int(round(float(c[0])))
+            if not (0 <= rr < grid.height and 0 <= cc < grid.width):
+                continue
+            src = int(m0.source[rr, cc])
+            if src in index_of:
+                ties.append(GroundTie(index_of[src], found[0], found[1], float(x) - found[0],
+                                      float(y) - found[1], MARKER_WEIGHT))
+                n_marker += 1
+    if reference is not None:
+        pick = np.unique(np.linspace(0, len(placed) - 1, min(n_samples, len(placed)))
+                         .round().astype(int))
+        for i in pick:
+            pf = project_frame(placed[i].values, camera, placed[i].pose, grid)
+            if pf is None:
+                continue
+            rs, cs = pf.window.slices
+            _, corr, _ = coregister_projected(pf, reference[:, rs, cs], grid.pixel_size,
+                                              max_shift_m=search_m, max_angle_deg=0.0)
+            if corr.applied:
+                xc = grid.x0 + (pf.window.col0 + pf.window.width / 2) * grid.pixel_size
+                yc = grid.y0 - (pf.window.row0 + pf.window.height / 2) * grid.pixel_size
+                ties.append(GroundTie(int(i), xc, yc, corr.dx_m, corr.dy_m, 1.0))
+                n_image += 1
+    if len(ties) < 2:
+        return AttitudeFit(init, n_marker, n_image, 0, float("nan"))
+    poses = [f.pose for f in frames]
+    att, rms, used = fit_attitude(camera, poses, ties, base_rpy_deg=init)
+    return AttitudeFit(att, n_marker, n_image, used, rms)

@@ -1,0 +1,137 @@
+"""The whole chain on the simulated demo survey, checked against its ground truth."""
+
+from __future__ import annotations
+
+import json
+import warnings
+
+import numpy as np
+import pytest
+import rasterio
+from rasterio.warp import Resampling, reproject
+
+from clearfast_gis.pipeline.truth import read_truth_objects, score_against_truth
+
+
+def truth_on_mosaic_grid(survey, products, scan: int):
+    name = f"scan_{scan:03d}.tif"
+    with rasterio.open(products / "mosaics" / name) as m, \
+            rasterio.open(survey / "truth" / "apparent_temperature" / name) as t:
+        mosaic = m.read(1)
+        truth = np.full(mosaic.shape, np.nan, np.float32)
+        reproject(t.read(1), truth, src_transform=t.transform, src_crs=t.crs,
+                  dst_transform=m.transform, dst_crs=m.crs, resampling=Resampling.average,
+                  src_nodata=np.nan, dst_nodata=np.nan)
+    return mosaic, truth
+
+
+def block_mean(a: np.ndarray, k: int) -> np.ndarray:
+    h, w = (a.shape[0] // k) * k, (a.shape[1] // k) * k
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", RuntimeWarning)
+        return np.nanmean(a[:h, :w].reshape(h // k, k, w // k, k), axis=(1, 3))
+
+
+def test_products_layout(demo_products):
+    manifest = json.loads((demo_products / "products.json").read_text())
+    assert manifest["crs"]["epsg"] == 32636
+    assert len(manifest["scans"]) == 6
+    for s in manifest["scans"]:
+        assert (demo_products / s["file"]).is_file()
+    assert (demo_products / "anomalies.gpkg").is_file()
+    assert (demo_products / "report.html").is_file()
+    assert (demo_products / "figures" / "overview.png").is_file()
+    assert set(manifest["timings_s"]) >= {"mosaics", "detection", "characterisation", "total"}
+
+
+def test_mosaics_are_valid_cogs_in_degrees_c(demo_products):
+    from osgeo_utils.samples.validate_cloud_optimized_geotiff import validate
+
+    for path in sorted((demo_products / "mosaics").glob("scan_*.tif")):
+        warnings_, errors, _ = validate(str(path), full_check=True)
+        assert errors == [], (path.name, errors)
+        with rasterio.open(path) as ds:
+            assert ds.crs.to_epsg() == 32636
+            assert ds.dtypes == ("float32", "float32")
+            assert all("um" in d for d in ds.descriptions)
+            assert ds.tags().get("CLEARFAST_SCAN_TIME_UTC", "").endswith("Z")
+            values = ds.read(1)
+            ok = np.isfinite(values)
+            assert ok.mean() > 0.5
+            assert -10 < np.median(values[ok]) < 45  # degrees C, not kelvin
+
+
+def test_mosaics_match_true_apparent_temperature(demo_survey, demo_products):
+    """Issue #6: the mosaic of every scan agrees with the truth over the footprint."""
+    for scan in range(6):
+        mosaic, truth = truth_on_mosaic_grid(demo_survey, demo_products, scan)
+        ok = np.isfinite(mosaic) & np.isfinite(truth)
+        assert ok.sum() > 0.5 * ok.size
+        err = mosaic[ok] - truth[ok]
+        assert abs(err.mean()) < 0.05, scan
+        # at the mosaic's own 1.4 cm cells the truth is sharper than the 160x128 camera sees:
+        assert np.sqrt(np.mean(err**2)) < 0.4, scan
+        # at the camera's ground resolution (~5 cm) the agreement is within 0.3 K
+        mb = block_mean(np.where(ok, mosaic, np.nan), 4)
+        tb = block_mean(np.where(ok, truth, np.nan), 4)
+        both = np.isfinite(mb) & np.isfinite(tb)
+        assert np.sqrt(np.mean((mb[both] - tb[both]) ** 2)) < 0.3, scan
+
+
+def test_markers_found_at_their_surveyed_positions(demo_products):
+    manifest = json.loads((demo_products / "products.json").read_text())
+    assert manifest["markers"]["found"] >= 2
+    assert manifest["markers"]["rms_offset_m"] < 0.05
+
+
+def test_scan_to_scan_residual(demo_products):
+    manifest = json.loads((demo_products / "products.json").read_text())
+    residuals = [s["residual_px"] for s in manifest["scans"][1:]
+                 if s["residual_px"] is not None]
+    assert residuals, "no residual could be measured"
+    assert max(residuals) <= 0.5
+
+
+def test_mines_found_and_characterised(demo_survey, demo_products):
+    import geopandas as gpd
+
+    score = score_against_truth(demo_survey, demo_products)
+    assert score.detection_probability >= 0.8, score.summary()
+    assert np.sqrt(np.mean(np.square(score.centre_errors_m))) < 0.05, score.summary()
+    sus = gpd.read_file(demo_products / "anomalies.gpkg", layer="suspects")
+    truth = read_truth_objects(demo_survey)
+    for at in [t for t in truth if t["kind"] == "at_mine" and t["depth_m"] == 0.0]:
+        d = np.hypot(sus["x"] - at["x"], sus["y"] - at["y"])
+        j = int(np.argmin(d))
+        assert d[j] < 0.05
+        # surface-laid AT mines come out at depth 0 (the paper's chain failed here)
+        assert sus["depth_m"].iloc[j] == pytest.approx(0.0, abs=0.01)
+        assert sus["class_cue"].iloc[j] == "at_mine"
+        assert abs(sus["diameter_m"].iloc[j] / at["diameter_m"] - 1) < 0.25
+
+
+def test_geopackage_layers_and_styles(demo_products):
+    import sqlite3
+
+    import pyogrio
+
+    layers = {name for name, _ in pyogrio.list_layers(demo_products / "anomalies.gpkg")}
+    assert {"anomalies", "suspects", "markers", "footprint"} <= layers
+    with sqlite3.connect(demo_products / "anomalies.gpkg") as db:
+        styled = {r[0] for r in db.execute("SELECT f_table_name FROM layer_styles "
+                                           "WHERE useAsDefault")}
+    assert {"anomalies", "suspects", "markers", "footprint"} <= styled
+
+
+def test_resume_recomputes_nothing(demo_survey, demo_products, tmp_path):
+    import shutil
+
+    from clearfast_gis.pipeline import process_survey
+
+    copy = tmp_path / "products"
+    shutil.copytree(demo_products, copy)
+    before = {p.name: p.stat().st_mtime_ns for p in (copy / "mosaics").glob("*.tif")}
+    manifest = process_survey(demo_survey, copy)
+    after = {p.name: p.stat().st_mtime_ns for p in (copy / "mosaics").glob("*.tif")}
+    assert before == after
+    assert manifest["timings_s"]["mosaics"] < 2.0
