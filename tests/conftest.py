@@ -72,3 +72,16 @@ def demo_products(demo_survey) -> Path:
     from clearfast_gis.pipeline import process_survey
 
     return _build_once("demo-products", lambda t: process_survey(demo_survey, t))
+
+
+@pytest.fixture(scope="session")
+def demo_drift_mosaics() -> tuple[Path, Path]:
+    """The demo survey with the trial's drifting lift (seed 1), and its mosaics."""
+    from clearfast_gis.pipeline import ProcessOptions, process_survey
+    from clearfast_gis.simulate import preset, simulate_survey
+
+    survey = _build_once("demo-drift-survey",
+                         lambda t: simulate_survey(t, preset("demo"), seed=1, drift=True))
+    products = _build_once("demo-drift-mosaics", lambda t: process_survey(
+        survey, t, ProcessOptions(invert=False), until="mosaics"))
+    return survey, products

@@ -68,8 +68,15 @@ def group() -> None:
 def cli(argv: list[str] | None = None) -> None:
     """Run the command line; never show a traceback for anticipated errors.
 
-    Set ``CLEARFAST_DEBUG=1`` to see the traceback of an unexpected error.
+    Set ``CLEARFAST_DEBUG=1`` to see the traceback of an unexpected error (and GDAL's own
+    log messages, which are otherwise kept off the terminal).
     """
+    if not os.environ.get("CLEARFAST_DEBUG"):
+        import logging
+
+        for name in ("rasterio", "pyogrio", "fiona"):
+            logging.getLogger(name).addHandler(logging.NullHandler())
+            logging.getLogger(name).propagate = False
     try:
         rv = group.main(args=argv, prog_name="clearfast", standalone_mode=False)
     except click.exceptions.Abort:

@@ -76,6 +76,9 @@ def detection_options(f):
                      help="Majority-voting level l (default: half the scans).")(f)
     f = click.option("--gamma", type=click.FloatRange(min=0.0), default=None,
                      help="Combination threshold (default: binary OR).")(f)
+    f = click.option("--max-anomalies", type=click.IntRange(min=1), default=None,
+                     help="Characterise and write at most this many anomalies (highest "
+                     "scores first; default 200).")(f)
     return f
 
 
@@ -88,7 +91,7 @@ def build_options(params: dict, invert: bool = True):
         raise click.UsageError("D2 must be smaller than D1")
     kw = {k: v for k, v in params.items()
           if k in ("pixel_size_m", "seam_balance", "reference_scan", "d1_m", "d2_m", "epsilon",
-                   "level", "gamma") and v is not None}
+                   "level", "gamma", "max_anomalies") and v is not None}
     if params.get("no_coregister"):
         kw["coregister"] = False
     if params.get("no_atmosphere"):

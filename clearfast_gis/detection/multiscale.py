@@ -88,14 +88,16 @@ def scale_ladder(min_diameter_px: float = 16.0, max_diameter_px: float = 362.0,
     return np.round(min_diameter_px * 2.0 ** (np.arange(k + 1) / per_octave), 1)
 
 
-def altitude_ladder(altitude_m: float, diameter_px_at_1m: float, spread: float = 4.0,
-                    per_octave: int = 2, min_diameter_px: float = 8.0,
-                    max_diameter_px: float = 640.0) -> np.ndarray:
-    """Ladder around the object diameter expected from the flight altitude.
+def altitude_ladder(altitude_m: float, diameter_px_at_1m: float, spread: float = 8.0,
+                    per_octave: int = 2, min_diameter_px: float = 16.0,
+                    max_diameter_px: float = 256.0) -> np.ndarray:
+    """A window of the ladder placed by the flight altitude.
 
-    The expected diameter is ``diameter_px_at_1m / altitude_m`` (a nadir camera: object size
-    times focal length in pixels, over the range); the ladder spans it divided and multiplied by
-    ``sqrt(spread)``, clipped to ``[min_diameter_px, max_diameter_px]``.
+    The expected object diameter is ``diameter_px_at_1m / altitude_m`` (a nadir camera: object
+    size times focal length in pixels, over the range). The ladder spans a factor ``spread``
+    (``centre / sqrt(spread)`` to ``centre * sqrt(spread)``), its centre clipped so that the
+    window stays inside ``[min_diameter_px, max_diameter_px]`` (the whole range when it is
+    narrower than ``spread``).
 
     Parameters
     ----------
@@ -105,14 +107,26 @@ def altitude_ladder(altitude_m: float, diameter_px_at_1m: float, spread: float =
         Object diameter in pixels at 1 m range.
     spread : float
         Ratio of the largest to the smallest diameter of the ladder (>= 1).
+    per_octave : int
+        Scales per factor 2.
+    min_diameter_px, max_diameter_px : float
+        Bounds of the window, pixels.
+
+    Returns
+    -------
+    ndarray (K,) of float, increasing.
     """
     if not altitude_m > 0 or not diameter_px_at_1m > 0 or spread < 1:
         raise ValueError(f"need altitude > 0, diameter at 1 m > 0 and spread >= 1, got "
                          f"{altitude_m}, {diameter_px_at_1m}, {spread}")
+    half = np.sqrt(spread)
+    lo_c, hi_c = min_diameter_px * half, max_diameter_px / half
     centre = diameter_px_at_1m / altitude_m
-    lo = float(np.clip(centre / np.sqrt(spread), min_diameter_px, max_diameter_px))
-    hi = float(np.clip(centre * np.sqrt(spread), lo, max_diameter_px))
-    return scale_ladder(lo, hi, per_octave)
+    centre = float(np.clip(centre, lo_c, hi_c)) if lo_c <= hi_c else np.sqrt(
+        min_diameter_px * max_diameter_px)
+    lo = max(min_diameter_px, centre / half)
+    hi = min(max_diameter_px, centre * half)
+    return scale_ladder(lo, hi * (1 + 1e-9), per_octave)
 
 
 _ALTITUDE = re.compile(r"__(\d+)-(\d*)m_")

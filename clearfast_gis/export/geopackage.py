@@ -10,7 +10,9 @@ from __future__ import annotations
 
 import os
 import re
+import shutil
 import sqlite3
+import tempfile
 from collections.abc import Mapping
 from pathlib import Path
 
@@ -77,24 +79,22 @@ def write_geopackage(
     unknown = sorted(set(styles) - set(layers))
     if unknown:
         raise InvalidInput("style for a layer that is not written", path, unknown[0])
-    with atomic_path(path) as tmp:
-        # GDAL wants the .gpkg extension: build beside the temporary name, then move onto it
-        work = tmp.with_name(tmp.name + ".gpkg")
-        try:
-            for name, frame in layers.items():
-                pyogrio.write_dataframe(
-                    frame, work, layer=name, driver="GPKG", append=work.exists(),
-                    geometry_type=_geometry_type(frame), promote_to_multi=False,
-                    dataset_options={"VERSION": GPKG_VERSION}, layer_options={"FID": "fid"},
-                )
-            if styles:
-                add_layer_styles(work, styles, style_name=style_name)
-            if timestamp_s is not None:
-                set_timestamps(work, timestamp_s)
-            os.replace(work, tmp)
-        finally:
-            if work.exists():
-                work.unlink()
+    with atomic_path(path) as tmp, tempfile.TemporaryDirectory(prefix="clearfast-gpkg-") as d:
+        # built in a scratch folder (GDAL wants the .gpkg extension and, on a full disk,
+        # reports sqlite errors rather than the OS error), then copied onto the temporary
+        # name: a full destination disk surfaces as an OSError that atomic_path reports.
+        work = Path(d) / "layers.gpkg"
+        for name, frame in layers.items():
+            pyogrio.write_dataframe(
+                frame, work, layer=name, driver="GPKG", append=work.exists(),
+                geometry_type=_geometry_type(frame), promote_to_multi=False,
+                dataset_options={"VERSION": GPKG_VERSION}, layer_options={"FID": "fid"},
+            )
+        if styles:
+            add_layer_styles(work, styles, style_name=style_name)
+        if timestamp_s is not None:
+            set_timestamps(work, timestamp_s)
+        shutil.copyfile(work, tmp)
     return os.fspath(path)
 
 

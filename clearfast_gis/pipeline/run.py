@@ -328,9 +328,6 @@ def process_survey(survey_path: str | Path, products: str | Path,
     progress.close()
     timings["mosaics"] = time.perf_counter() - t0
 
-    finished = state.done("products") if until == "products" else None
-    if finished is not None and finished.get("key") == options.detection_key():
-        return read_products_manifest(products)  # a finished run: nothing left to do
     if until == "mosaics":
         manifest = _base_manifest(survey, epsg, options, scan_records,
                                   _fix_quality_summary(ctx))
@@ -341,9 +338,6 @@ def process_survey(survey_path: str | Path, products: str | Path,
     timings["total"] = time.perf_counter() - t_all
     manifest["timings_s"] = {k: round(v, 3) for k, v in timings.items()}
     write_products_manifest(products, manifest)
-    if until == "products":
-        state.finish("products", {"key": options.detection_key()},
-                     ["products.json", "anomalies.gpkg", "report.html"])
     return manifest
 
 
@@ -372,8 +366,10 @@ def _anomaly_stage(ctx, survey, products: Path, options: ProcessOptions, state: 
     done = state.done("anomalies")
     if done is not None and done.get("key") == options.detection_key() \
             and (products / "products.json").exists():
-        progress.message("anomalies: up to date, kept")
-        return read_products_manifest(products)
+        kept = read_products_manifest(products)
+        if kept.get("parameters") == options.as_dict():
+            progress.message("anomalies: up to date, kept")
+            return kept
     scans = sorted(scan_records)
     times = np.array([scan_records[s]["time_s"] for s in scans])
     lon = float(survey.manifest["site"]["longitude_deg"])

@@ -1,9 +1,9 @@
 """Checkpoints of a processing run: what is finished, so a re-run resumes.
 
 The state lives in ``PRODUCTS/.clearfast/state.json`` and is rewritten atomically after every
-finished unit of work (band offsets, a scan mosaic, the anomalies, the products manifest). A
-unit counts as finished only when its record matches the current inputs and parameters and its
-product files still have the recorded checksums.
+finished unit of work (band offsets, a scan mosaic, the anomalies). A unit counts as finished
+only when its record matches the current inputs and parameters and its product files still
+have the recorded checksums.
 
 Opening the state also
 

@@ -58,7 +58,11 @@ def test_scale_ladder_and_altitude_ladder():
     np.testing.assert_allclose(scale_ladder(10, 10), [10])
     lad = altitude_ladder(2.0, 200.0, spread=4.0, per_octave=1)
     np.testing.assert_allclose(lad, [50, 100, 200])  # centre 100 px, /2 .. x2
-    assert altitude_ladder(100.0, 200.0)[0] == 8.0  # clipped to the minimum
+    # the window slides inside [16, 256] px: high flights keep the smallest scales
+    np.testing.assert_allclose(altitude_ladder(100.0, 200.0, spread=4.0, per_octave=1),
+                               [16, 32, 64])
+    np.testing.assert_allclose(altitude_ladder(0.1, 200.0, spread=4.0, per_octave=1),
+                               [64, 128, 256])
     with pytest.raises(ValueError):
         scale_ladder(20, 10)
     with pytest.raises(ValueError):
