@@ -20,7 +20,7 @@ COLUMNS = ["image", "x_px", "y_px", "area_px", "diameter_px", "circularity", "sc
                 type=click.Path(dir_okay=False))
 @click.option("-o", "--output", required=True, type=click.Path(dir_okay=False),
               help="Detections CSV, one row per detection.")
-@click.option("--mode", type=click.Choice(["multiscale", "single"]), default="multiscale",
+@click.option("--mode", type=click.Choice(["multiscale", "single"]), default="single",
               show_default=True,
               help="Multi-scale ladder of object sizes, or one D1/D2 pair (--d1-px ...).")
 @click.option("--min-diameter-px", type=float, default=16.0, show_default=True,

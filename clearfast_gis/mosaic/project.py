@@ -77,8 +77,31 @@ def subgrid(grid: GroundGrid, window: Window) -> GroundGrid:
                       window.width, window.height, grid.epsg)
 
 
+def pixel_angle_rad(camera) -> float:
+    """Angular size of one pixel at the frame centre, radians."""
+    ifov = getattr(camera, "ifov_rad", None)
+    return float(ifov) if ifov is not None else 1.0 / float(camera.fx)
+
+
+def antialias_sigma_px(camera, pose: CameraPose, cell_m: float) -> float:
+    """Gaussian sigma (frame pixels) that low-passes a frame to the mosaic cell size.
+
+    Zero when the frame's ground pixel at its centre is already as large as a cell;
+    otherwise half the ratio of the cell to the ground pixel, so resampling onto coarser
+    cells averages instead of aliasing (the mosaic keeps the mean temperature of a cell).
+    """
+    g = camera.ground_points(np.array([(camera.width - 1) / 2.0]),
+                             np.array([(camera.height - 1) / 2.0]), pose)[0]
+    if not np.all(np.isfinite(g)):
+        return 0.0
+    ground_px = float(np.linalg.norm(g - pose.position_m)) * pixel_angle_rad(camera)
+    ratio = cell_m / ground_px
+    return 0.5 * ratio if ratio > 1.2 else 0.0
+
+
 def project_frame(frame: np.ndarray, camera, pose: CameraPose, grid: GroundGrid,
-                  max_incidence_deg: float = 85.0) -> ProjectedFrame | None:
+                  max_incidence_deg: float = 85.0, antialias: bool = True
+                  ) -> ProjectedFrame | None:
     """Resample a frame onto the part of ``grid`` it sees.
 
     Parameters
@@ -92,6 +115,8 @@ def project_frame(frame: np.ndarray, camera, pose: CameraPose, grid: GroundGrid,
         The mosaic grid.
     max_incidence_deg : float
         Cells seen at a more grazing angle are left out.
+    antialias : bool
+        Low-pass the frame to the cell size first (:func:`antialias_sigma_px`).
 
     Returns
     -------
@@ -108,8 +133,12 @@ def project_frame(frame: np.ndarray, camera, pose: CameraPose, grid: GroundGrid,
     if not seen.any():
         return None
     values = np.empty((stack.shape[0], *sub.shape), dtype=np.float32)
+    sigma = antialias_sigma_px(camera, pose, grid.pixel_size) if antialias else 0.0
     for b in range(stack.shape[0]):
-        values[b] = cv2.remap(np.ascontiguousarray(stack[b], dtype=np.float32), map_x, map_y,
+        band = np.ascontiguousarray(stack[b], dtype=np.float32)
+        if sigma > 0:
+            band = cv2.GaussianBlur(band, (0, 0), sigma, borderType=cv2.BORDER_REPLICATE)
+        values[b] = cv2.remap(band, map_x, map_y,
                               interpolation=cv2.INTER_LINEAR, borderMode=cv2.BORDER_CONSTANT,
                               borderValue=float("nan"))
     incidence = incidence_angle_map(pose, sub)

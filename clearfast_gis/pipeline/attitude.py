@@ -5,8 +5,10 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
+import shapely
 
 from clearfast_gis.geometry.grid import GroundGrid
+from clearfast_gis.geometry.projection import frame_footprint
 from clearfast_gis.mosaic import FrameInput, build_scan_mosaic, project_frame
 from clearfast_gis.mosaic.attitude import GroundTie, fit_attitude, with_attitude
 from clearfast_gis.mosaic.coregister import coregister_projected
@@ -48,6 +50,31 @@ def reposed(frames: list[FrameInput], attitude_rpy_deg) -> list[FrameInput]:
             for f in frames]
 
 
+def _marker_tie(placed: list[FrameInput], footprints, camera, grid: GroundGrid, n_bands: int,
+                x: float, y: float, search_m: float) -> GroundTie | None:
+    """Find one surveyed marker in a small mosaic of the frames that see it."""
+    box = shapely.box(x - search_m, y - search_m, x + search_m, y + search_m)
+    sel = [i for i, fp in enumerate(footprints) if fp.intersects(box)]
+    if not sel:
+        return None
+    ps = grid.pixel_size
+    x0 = grid.x0 + np.floor((x - search_m - grid.x0) / ps) * ps
+    y0 = grid.y0 - np.floor((grid.y0 - (y + search_m)) / ps) * ps
+    n = int(np.ceil(2 * search_m / ps)) + 2
+    local = GroundGrid(x0, y0, ps, n, n, grid.epsg)
+    m = build_scan_mosaic([placed[i] for i in sel], camera, local, n_bands, coregister=False)
+    found = locate_marker(m.values[0], local, x, y, search_m=search_m)
+    if found is None:
+        return None
+    r, c = local.rowcol(np.array([found[0]]), np.array([found[1]]))
+    rr, cc = int(round(float(r[0]))), int(round(float(c[0])))
+    if not (0 <= rr < local.height and 0 <= cc < local.width) or m.source[rr, cc] < 0:
+        return None
+    index_of = {f.index: i for i, f in enumerate(placed)}
+    return GroundTie(index_of[int(m.source[rr, cc])], found[0], found[1], x - found[0],
+                     y - found[1], MARKER_WEIGHT)
+
+
 def scan_attitude(frames: list[FrameInput], camera, grid: GroundGrid, n_bands: int,
                   reference: np.ndarray | None, marker_xy: np.ndarray,
                   init_rpy_deg=(0.0, 0.0, 0.0), search_m: float = 0.6,
@@ -82,20 +109,12 @@ def scan_attitude(frames: list[FrameInput], camera, grid: GroundGrid, n_bands: i
     ties: list[GroundTie] = []
     n_marker = n_image = 0
     if len(marker_xy):
-        m0 = build_scan_mosaic(placed, camera, grid, n_bands, coregister=False)
-        index_of = {f.index: i for i, f in enumerate(placed)}
+        footprints = [frame_footprint(camera, f.pose) for f in placed]
         for x, y in marker_xy:
-            found = locate_marker(m0.values[0], grid, float(x), float(y))
-            if found is None:
-                continue
-            r, c = grid.rowcol(np.array([found[0]]), np.array([found[1]]))
-            rr, cc = int(round(float(r[0]))), int(round(float(c[0])))
-            if not (0 <= rr < grid.height and 0 <= cc < grid.width):
-                continue
-            src = int(m0.source[rr, cc])
-            if src in index_of:
-                ties.append(GroundTie(index_of[src], found[0], found[1], float(x) - found[0],
-                                      float(y) - found[1], MARKER_WEIGHT))
+            tie = _marker_tie(placed, footprints, camera, grid, n_bands, float(x), float(y),
+                              search_m)
+            if tie is not None:
+                ties.append(tie)
                 n_marker += 1
     if reference is not None:
         pick = np.unique(np.linspace(0, len(placed) - 1, min(n_samples, len(placed)))

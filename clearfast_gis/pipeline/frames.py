@@ -9,7 +9,6 @@ from __future__ import annotations
 from collections.abc import Iterator, Sequence
 from dataclasses import dataclass
 
-import cv2
 import numpy as np
 
 from clearfast_gis.errors import InvalidInput
@@ -53,16 +52,25 @@ class SurveyContext:
 
 def frame_pose(ctx: SurveyContext, time_s: float, pan_deg: float, tilt_deg: float) -> CameraPose:
     """Geometric pose of a frame: RTK position at the frame time, pan/tilt, mount."""
-    antenna = ctx.track.at(np.array([time_s]))[0]
-    return pose_from_ptu(antenna, pan_deg, tilt_deg, ctx.survey.manifest["platform"])
+    return frame_poses(ctx, np.array([time_s]), np.array([pan_deg]), np.array([tilt_deg]))[0]
+
+
+def frame_poses(ctx: SurveyContext, time_s: np.ndarray, pan_deg: np.ndarray,
+                tilt_deg: np.ndarray) -> list[CameraPose]:
+    """Geometric poses of many frames (one vectorised position interpolation)."""
+    antenna = ctx.track.at(np.asarray(time_s, dtype=float))
+    platform = ctx.survey.manifest["platform"]
+    return [pose_from_ptu(a, p, t, platform) for a, p, t in zip(antenna, pan_deg, tilt_deg,
+                                                                 strict=True)]
 
 
 def path_length_map(camera, pose: CameraPose, lattice: int = 17) -> np.ndarray:
-    """Camera-to-ground distance per pixel (m), float32 (H, W), from a coarse lattice.
+    """Camera-to-ground distance (m) on a lattice of pixels, float32 (lattice, lattice).
 
     The slant range varies smoothly over a frame, so it is computed exactly on a
-    ``lattice x lattice`` grid of pixels and interpolated bilinearly. Pixels that see the sky
-    get the largest range of the frame.
+    ``lattice x lattice`` grid of pixels spanning the frame corner to corner; the radiometry
+    interpolates the transmittance bilinearly from it. Pixels that see the sky get the
+    largest range of the frame.
     """
     w, h = camera.width, camera.height
     us = np.linspace(0, w - 1, lattice)
@@ -72,8 +80,7 @@ def path_length_map(camera, pose: CameraPose, lattice: int = 17) -> np.ndarray:
     d = np.linalg.norm(g - pose.position_m[None, :], axis=1)
     d = np.where(np.isfinite(d), d, np.nan)
     fill = np.nanmax(d) if np.isfinite(d).any() else 20.0
-    d = np.where(np.isfinite(d), d, fill).reshape(lattice, lattice).astype(np.float32)
-    return cv2.resize(d, (w, h), interpolation=cv2.INTER_LINEAR)
+    return np.where(np.isfinite(d), d, fill).reshape(lattice, lattice).astype(np.float32)
 
 
 def scan_frames(ctx: SurveyContext, scan: int, air_at, atmosphere: bool = True,
@@ -111,7 +118,7 @@ def scan_frames(ctx: SurveyContext, scan: int, air_at, atmosphere: bool = True,
     if keep.size == 0:
         return
     sel = [r[np.isin(fr.position[r], keep)] for r in rows_by_band]
-    poses = [frame_pose(ctx, fr.time_s[i], fr.pan_deg[i], fr.tilt_deg[i]) for i in sel[0]]
+    poses = frame_poses(ctx, fr.time_s[sel[0]], fr.pan_deg[sel[0]], fr.tilt_deg[sel[0]])
     raw_all = [survey.read_scan(scan, b) for b in range(n_bands)]
     pos_all = [fr.position[survey.scan_rows(scan, b)] for b in range(n_bands)]
     for start in range(0, keep.size, chunk):

@@ -80,14 +80,21 @@ def _input_key(survey, options: ProcessOptions) -> str:
     return h.hexdigest()[:20]
 
 
+MIN_DEFAULT_PIXEL_M = 0.02
+"""Finest default mosaic cell, metres: five cells across the smallest AP mine (10.4 cm)."""
+
+
 def _pixel_size(survey, options: ProcessOptions) -> float:
+    """Mosaic cell size: the option, else the mission's mean across-track ground resolution,
+    not finer than :data:`MIN_DEFAULT_PIXEL_M` (finer cells cost memory and time without
+    helping the detection of mines; frames are low-pass filtered to the cell size)."""
     if options.pixel_size_m:
         return float(options.pixel_size_m)
     res = survey.mission.get("ground_resolution_m") or {}
     lo, hi = res.get("across_min"), res.get("across_max")
     if lo and hi:
-        return round(0.5 * (float(lo) + float(hi)), 3)
-    return 0.02
+        return max(MIN_DEFAULT_PIXEL_M, round(0.5 * (float(lo) + float(hi)), 3))
+    return MIN_DEFAULT_PIXEL_M
 
 
 def open_context(survey_path: str | Path, progress: Progress = NULL_PROGRESS):

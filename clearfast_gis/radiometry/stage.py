@@ -14,6 +14,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
+import cv2
 import numpy as np
 from numpy.typing import ArrayLike
 
@@ -160,8 +161,10 @@ def apparent_temperature_frames(
         Calibration events (any bands).
     air : AirState
         Air state per frame, arrays (P,).
-    path_length_m : float, array_like (P,) or (P, H, W), optional
+    path_length_m : float, array_like (P,), (P, H, W) or (P, h, w), optional
         Path length per frame or per pixel, metres; default :data:`DEFAULT_PATH_LENGTH_M`.
+        A coarser (P, h, w) lattice spanning the frame corners to corners (the path varies
+        smoothly) is turned into transmittance there and interpolated bilinearly.
     mode : {"interpolate", "nearest"}
         Event selection (see :func:`select_events`).
     min_contrast_counts : float
@@ -185,8 +188,12 @@ def apparent_temperature_frames(
                       dtype=np.float64)
     if path.ndim == 1:
         path = path.reshape(n, 1, 1)
-    if path.ndim == 3 and path.shape not in ((n, 1, 1), raw.shape):
+    if path.ndim == 3 and path.shape[0] != n:
         raise InvalidInput(f"path length shape {path.shape} does not match frames {raw.shape}",
+                           field="path_length_m")
+    coarse = path.ndim == 3 and path.shape[1:] not in ((1, 1), raw.shape[1:])
+    if coarse and not (2 <= path.shape[1] <= raw.shape[1] and 2 <= path.shape[2] <= raw.shape[2]):
+        raise InvalidInput(f"path length lattice {path.shape} does not fit frames {raw.shape}",
                            field="path_length_m")
     cache: dict[int, GainOffset] = {}
     out = np.empty(raw.shape, dtype=np.float32)
@@ -201,6 +208,9 @@ def apparent_temperature_frames(
             tau = atmospheric_transmittance(d, air.t_air_k[k], air.rh_pct[k],
                                             air.pressure_hpa[k], table.lambda_min_um,
                                             table.lambda_max_um)
+            if coarse:
+                tau = cv2.resize(np.asarray(tau, dtype=np.float32),
+                                 (raw.shape[2], raw.shape[1]), interpolation=cv2.INTER_LINEAR)
         else:
             tau = 1.0
         out[k] = raw_to_apparent(raw[k], blend_gain_offsets(parts), tau, air.t_air_k[k], table)
