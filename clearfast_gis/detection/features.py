@@ -4,13 +4,17 @@ Definitions (also in docs/detection.md):
 
 - centroid: mean (row, col) of the blob's pixels (pixel centres at integers); map centroid
   ``transform * (col + 0.5, row + 0.5)`` (the rasterio affine of the grid maps pixel corners).
-- area: pixel count (and ``count * pixel_size_m**2``); equivalent diameter
-  ``sqrt(4 area / pi)``.
+- area: pixel count of the detected blob (and ``count * pixel_size_m**2``).
+- diameter: equivalent diameter ``sqrt(4 A / pi)`` of the half-maximum thermal footprint
+  (:func:`half_max_footprint`: the connected region around the centroid where the pixel's RMS
+  deviation from the background ring over the scans exceeds half the blob's peak). The
+  thresholded blob also takes in blur and thermal halo and overstates the size;
+  ``blob_diameter_px`` keeps the blob's own equivalent diameter.
 - circularity (paper §6): mean of the minor/major axis ratio of the blob's inertia ellipse and
   the compactness ``4 pi A / P**2``. P is scikit-image's ``regionprops`` perimeter (boundary
   pixels of the 4-connected contour weighted 1, sqrt(2) or (1+sqrt(2))/2 by configuration); on
   small digital disks that estimator gives compactness slightly above 1, so it is clipped to 1.
-- contrast series: per scan (and band), ``centre = mean over the blob's pixels`` and
+- contrast series: per scan (and band), ``centre = mean over the half-maximum footprint`` and
   ``ring = mean over an annulus around the centroid`` with radii ``ring_radii`` times the
   equivalent radius (at least 1 and 2 pixels beyond the blob), excluding every detected blob and
   no-data; ``contrast = centre - ring`` (K when the stack is in K or degrees C).
@@ -103,6 +107,7 @@ class AnomalyFeatures:
     noise_k: np.ndarray
     score: float
     bbox: tuple[int, int, int, int] = field(default=(0, 0, 0, 0))
+    blob_diameter_px: float = float("nan")
 
 
 def summary_polarity(polarity_per_scan: np.ndarray, times_s: np.ndarray | None = None,
@@ -159,6 +164,64 @@ def _ring_pixels(labels: np.ndarray, valid: np.ndarray, row: float, col: float,
     d2 = (rr - row) ** 2 + (cc - col) ** 2
     sel = (d2 >= r_in**2) & (d2 <= r_out**2) & (labels[r0:r1, c0:c1] == 0) & valid[r0:r1, c0:c1]
     return rr[sel], cc[sel]
+
+
+def half_max_footprint(cube: np.ndarray, labels: np.ndarray, label: int, row: float,
+                       col: float, ring: np.ndarray, bbox: tuple[int, int, int, int],
+                       grow_px: int) -> tuple[np.ndarray, np.ndarray]:
+    """Pixels of a blob's half-maximum thermal footprint.
+
+    The amplitude of each pixel is its RMS deviation from the blob's background ring over
+    the scans and bands, ``S = sqrt(mean_i (T_i - ring_i)^2)``; the footprint is the
+    connected region around the centroid where ``S`` exceeds half the blob's peak amplitude
+    (the 95th percentile of ``S`` in the blob, robust to noise), searched within the blob's
+    box grown by ``grow_px``. For a disc seen through a moderate blur its area is the disc's,
+    whereas the detector's thresholded blob also takes in part of the blur and of the
+    thermal halo.
+
+    Parameters
+    ----------
+    cube : float (N, B, H, W)
+    labels : int (H, W)
+    label : int
+    row, col : float
+        Blob centroid, pixels.
+    ring : float (N, B)
+        Background ring mean per scan and band.
+    bbox : (min_row, min_col, max_row, max_col)
+    grow_px : int
+
+    Returns
+    -------
+    rows, cols : int arrays
+        The footprint's pixels (the blob's own pixels when no footprint is found).
+    """
+    from scipy import ndimage
+
+    h, w = labels.shape
+    r0, c0 = max(0, bbox[0] - grow_px), max(0, bbox[1] - grow_px)
+    r1, c1 = min(h, bbox[2] + grow_px), min(w, bbox[3] + grow_px)
+    sub = cube[:, :, r0:r1, c0:c1] - ring[:, :, None, None]
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", category=RuntimeWarning)
+        amp = np.sqrt(np.nanmean(sub.reshape(-1, r1 - r0, c1 - c0) ** 2, axis=0))
+    own = labels[r0:r1, c0:c1] == label
+    vals = amp[own & np.isfinite(amp)]
+    if vals.size == 0:
+        rr, cc = np.nonzero(own)
+        return rr + r0, cc + c0
+    above = np.nan_to_num(amp, nan=0.0) >= 0.5 * np.percentile(vals, 95)
+    lab, _ = ndimage.label(above)
+    rc, cc_ = int(round(row)) - r0, int(round(col)) - c0
+    core = lab[rc, cc_] if 0 <= rc < lab.shape[0] and 0 <= cc_ < lab.shape[1] else 0
+    if core == 0:
+        ids, counts = np.unique(lab[own & (lab > 0)], return_counts=True)
+        if ids.size == 0:
+            rr, cc = np.nonzero(own)
+            return rr + r0, cc + c0
+        core = ids[np.argmax(counts)]
+    rr, cc = np.nonzero(lab == core)
+    return rr + r0, cc + c0
 
 
 def blob_features(
@@ -233,6 +296,13 @@ def blob_features(
             ring = np.nanmean(cube[:, :, rr, cc], axis=2) if rr.size else np.full((n, b), np.nan)
             noise_k = (np.nanstd(cube[:, :, rr, cc], axis=2) if rr.size > 1
                        else np.full((n, b), np.nan))
+        fr, fc = half_max_footprint(cube, labels, int(region.label), row, col,
+                                    np.nan_to_num(ring), region.bbox,
+                                    grow_px=int(np.ceil(r_eq)))
+        fwhm_diameter = float(np.sqrt(4.0 * fr.size / np.pi))
+        with np.errstate(invalid="ignore"), warnings.catch_warnings():
+            warnings.simplefilter("ignore", category=RuntimeWarning)
+            centre = np.nanmean(cube[:, :, fr, fc], axis=2)
         contrast = centre - ring
         c_scan = np.nanmean(contrast, axis=1) if b > 1 else contrast[:, 0]
         sigma = noise_k if noise == "ring" else image_noise
@@ -254,7 +324,8 @@ def blob_features(
         squeeze = (lambda a: a[:, 0]) if b == 1 else (lambda a: a)
         out.append(AnomalyFeatures(
             id=int(region.label), row=row, col=col, x=float(x), y=float(y),
-            area_px=area, area_m2=area * ps**2, diameter_px=diameter, diameter_m=diameter * ps,
+            area_px=area, area_m2=area * ps**2, diameter_px=fwhm_diameter,
+            diameter_m=fwhm_diameter * ps, blob_diameter_px=diameter,
             circularity=circ, axis_ratio=ratio, compactness=compact,
             polarity_per_scan=pol, polarity=summary_polarity(pol, times_s, longitude_deg),
             n_scans=int(seen.sum()), centre_k=squeeze(centre), ring_k=squeeze(ring),

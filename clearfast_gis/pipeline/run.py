@@ -229,7 +229,8 @@ def _band_offsets(ctx: SurveyContext, state: RunState, reference: int, progress:
 
 def process_survey(survey_path: str | Path, products: str | Path,
                    options: ProcessOptions | None = None, resume: bool = True,
-                   progress: Progress = NULL_PROGRESS, until: str = "products") -> dict:
+                   progress: Progress = NULL_PROGRESS, until: str = "products",
+                   redo_anomalies: bool = False) -> dict:
     """Run the chain from a survey folder to a products folder.
 
     Parameters
@@ -245,6 +246,9 @@ def process_survey(survey_path: str | Path, products: str | Path,
     progress : Progress
     until : {"products", "mosaics"}
         Stop after the scan mosaics (``clearfast mosaic``) or run the whole chain.
+    redo_anomalies : bool
+        Detect and characterise again even when the anomalies are up to date
+        (``clearfast detect``).
 
     Returns
     -------
@@ -340,6 +344,8 @@ def process_survey(survey_path: str | Path, products: str | Path,
                                   _fix_quality_summary(ctx))
         manifest["products"] = {"mosaics": "mosaics/"}
     else:
+        if redo_anomalies:
+            state.drop("anomalies")
         manifest = _anomaly_stage(ctx, survey, products, options, state, scan_records, epsg,
                                   grid, report, timings, progress)
     timings["total"] = time.perf_counter() - t_all
@@ -456,7 +462,8 @@ def redetect(products: str | Path, options: ProcessOptions,
     keep = {k: old[k] for k in ("pixel_size_m", "coregister", "max_shift_m", "max_angle_deg",
                                 "seam_balance", "reference_scan", "atmosphere") if k in old}
     opts = dataclasses.replace(options, **keep)
-    return process_survey(survey_path, products, opts, resume=True, progress=progress)
+    return process_survey(survey_path, products, opts, resume=True, progress=progress,
+                          redo_anomalies=True)
 
 
 __all__ = ["format_utc", "process_survey", "redetect"]

@@ -57,16 +57,18 @@ def test_cli_writes_csv(tmp_path):
         best = [r for r in rows if r["image"] == name][0]
         assert float(best["x_px"]) == pytest.approx(50.0, abs=0.5)
         assert float(best["y_px"]) == pytest.approx(40.0, abs=0.5)
-    # multi-scale (default mode), altitude read from the name: same best blob
+    # multi-scale mode, altitude read from the name: same best blob
     named = tmp_path / "c__0-5m_x.png"
     named.write_bytes(png.read_bytes())
-    res = CliRunner().invoke(command, [str(named), "-o", str(out), "--altitude-from-name",
+    res = CliRunner().invoke(command, [str(named), "-o", str(out), "--mode", "multiscale",
+                                       "--altitude-from-name",
                                        "--px-at-1m", "6", "--progress", "none"])
     assert res.exit_code == 0, res.output
     rows = list(csv.DictReader(out.open()))
     assert (float(rows[0]["x_px"]), float(rows[0]["y_px"])) == pytest.approx((50, 40), abs=1.5)
     assert rows[0]["polarity"] == "warm" and 3.0 <= float(rows[0]["scale_px"]) <= 35.0
-    res = CliRunner().invoke(command, [str(named), "-o", str(out), "--min-diameter-px", "1"])
+    res = CliRunner().invoke(command, [str(named), "-o", str(out), "--mode", "multiscale",
+                                       "--min-diameter-px", "1"])
     assert getattr(res.exception, "exit_code", None) == 2  # usage error
 
 
