@@ -75,7 +75,8 @@ def detection_options(f):
     f = click.option("--level", type=click.IntRange(min=1), default=None,
                      help="Majority-voting level l (default: half the scans).")(f)
     f = click.option("--gamma", type=click.FloatRange(min=0.0), default=None,
-                     help="Combination threshold (default: binary OR).")(f)
+                     help="Combination threshold on the sum of the reconstructed images (default: "
+                     "a quarter of the scans x bands; 1 = binary OR).")(f)
     f = click.option("--max-anomalies", type=click.IntRange(min=1), default=None,
                      help="Characterise and write at most this many anomalies (highest "
                      "scores first; default 200).")(f)

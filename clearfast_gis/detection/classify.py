@@ -5,6 +5,9 @@ Rules (documented in docs/detection.md):
 1. clutter when any clutter cue holds: circularity < 0.5 (irregular outline); summary polarity
    'mixed' over several supporting scans (inconsistent thermal behaviour); a characterised
    diffusivity like stone or metal (``clearfast_gis.thermal.cue.material_cue`` says stone or metal).
+   An anomaly cool around midday is clutter too (stones and low-emissivity metal are cool by
+   day; an explosive-filled object, a worse conductor than the soil, is warm by day).
+   Anomalies scoring below ``MIN_MINE_SCORE`` (2) are ``unknown``: too weak to cue.
 2. otherwise, by the equivalent diameter: at_mine for 0.25-0.45 m (e.g. M6A2, 33.7 cm), ap_mine
    for 0.06-0.16 m (e.g. M2A4, 10.4 cm); unknown outside both ranges or without a metric size.
 
@@ -23,7 +26,8 @@ from collections.abc import Mapping
 
 from clearfast_gis.detection.features import AnomalyFeatures
 
-__all__ = ["AT_DIAMETER_M", "AP_DIAMETER_M", "CLASSES", "classify", "diffusivity_cue"]
+__all__ = ["AT_DIAMETER_M", "AP_DIAMETER_M", "CLASSES", "MIN_MINE_SCORE", "classify",
+           "diffusivity_cue"]
 
 CLASSES = ("at_mine", "ap_mine", "clutter", "unknown")
 AT_DIAMETER_M = (0.25, 0.45)
@@ -84,7 +88,12 @@ def _material(alpha: float, inversion) -> str:
     return _CUE_CLASS.get(best, diffusivity_cue(alpha))
 
 
-def classify(features: AnomalyFeatures, inversion=None) -> tuple[str, float]:
+MIN_MINE_SCORE = 2.0
+"""Below this detection score an anomaly is too weak to be cued as a mine (``unknown``)."""
+
+
+def classify(features: AnomalyFeatures, inversion=None, contrast_day_k: float | None = None,
+             min_score: float = MIN_MINE_SCORE) -> tuple[str, float]:
     """Class cue and confidence of one anomaly.
 
     Parameters
@@ -95,6 +104,12 @@ def classify(features: AnomalyFeatures, inversion=None) -> tuple[str, float]:
     inversion : mapping or object, optional
         Thermal inversion of the anomaly with ``diffusivity_m2s`` (m2/s) and optionally
         ``characterised`` (bool).
+    contrast_day_k : float, optional
+        Contrast around midday (centre minus background), K. An explosive-filled object
+        conducts heat worse than the soil and shows warm by day; an object cool by day
+        (a stone, or metal and other low-emissivity debris) is clutter.
+    min_score : float
+        Anomalies scoring lower are ``unknown`` (too weak to cue as a mine).
 
     Returns
     -------
@@ -118,8 +133,12 @@ def classify(features: AnomalyFeatures, inversion=None) -> tuple[str, float]:
     diff_term = {"mine": 1.0, "soil": 0.7, "stone_metal": 0.4, None: 0.8}[material]
     product = detect_term * shape_term * time_term * diff_term
 
-    if irregular or inconsistent or hard:
+    cool_by_day = contrast_day_k is not None and math.isfinite(contrast_day_k) \
+        and contrast_day_k < 0.0
+    if (irregular or inconsistent or hard or cool_by_day) and features.score >= min_score:
         return "clutter", round(1.0 - product, 4)
+    if features.score < min_score or irregular or inconsistent or hard:
+        return "unknown", round(product, 4)
     d = features.diameter_m
     if math.isfinite(d) and AT_DIAMETER_M[0] <= d <= AT_DIAMETER_M[1]:
         return "at_mine", round(product, 4)

@@ -62,7 +62,7 @@ def disk_px(size_m: float, pixel_size_m: float, minimum: int = 3) -> int:
 def detect_on_mosaics(stack_c: np.ndarray, times_s: np.ndarray, transform, pixel_size_m: float,
                       longitude_deg: float, d1_m: float, d2_m: float, epsilon: float,
                       level: int | None, gamma: float | None, max_anomalies: int,
-                      level_fraction: float = 0.5,
+                      level_fraction: float = 0.5, gamma_fraction: float | None = None,
                       progress: Progress = NULL_PROGRESS) -> tuple[np.ndarray, list]:
     """The morphological detector on mosaics, and blob features.
 
@@ -81,6 +81,8 @@ def detect_on_mosaics(stack_c: np.ndarray, times_s: np.ndarray, transform, pixel
     d1_m, d2_m, epsilon, level, gamma : detector parameters (paper §4), sizes in metres.
     level_fraction : float
         Voting level as a fraction of the N x B images when ``level`` is None.
+    gamma_fraction : float or None
+        Combination threshold as a fraction of the images when ``gamma`` is None (None: OR).
     max_anomalies : int
         Keep the highest-scoring ones.
 
@@ -90,8 +92,11 @@ def detect_on_mosaics(stack_c: np.ndarray, times_s: np.ndarray, transform, pixel
         Relabelled 1..K in the order of ``features``.
     features : list of AnomalyFeatures
     """
+    n_images = stack_c.shape[0] * stack_c.shape[1]
     if level is None:
-        level = max(1, int(round(level_fraction * stack_c.shape[0] * stack_c.shape[1])))
+        level = max(1, int(round(level_fraction * n_images)))
+    if gamma is None and gamma_fraction is not None:
+        gamma = max(1.0, float(round(gamma_fraction * n_images)))
     det = detect_anomalies(stack_c, disk_px(d1_m, pixel_size_m), disk_px(d2_m, pixel_size_m),
                            epsilon=epsilon, level=level, gamma=gamma, progress=progress)
     feats = blob_features(det.labels, stack_c, times_s=times_s, transform=transform,
@@ -164,6 +169,32 @@ def split_markers(features: list[AnomalyFeatures], marker_ids: list[str],
             matches.append(MarkerMatch(str(mid), float(marker_xy[j, 0]), float(marker_xy[j, 1]),
                                        float(fx[i]), float(fy[i])))
     return [f for f, m in zip(features, is_marker, strict=True) if not m], matches
+
+
+def markers_in_mosaics(stack_c: np.ndarray, grid, marker_ids: list[str],
+                       marker_xy: np.ndarray) -> list[MarkerMatch]:
+    """Where each surveyed marker appears in the mosaics: the median over the scans of its
+    contrast-weighted centroid (:func:`clearfast_gis.mosaic.markers.locate_marker`).
+
+    Parameters
+    ----------
+    stack_c : float32 (N, B, H, W)
+        Mosaics, degrees C.
+    grid : GroundGrid
+    marker_ids : list of str
+    marker_xy : float (M, 2)
+        Surveyed positions, survey CRS metres.
+    """
+    from clearfast_gis.mosaic.markers import locate_marker
+
+    out = []
+    for mid, (x, y) in zip(marker_ids, marker_xy, strict=True):
+        found = [p for p in (locate_marker(stack_c[i, 0], grid, float(x), float(y))
+                             for i in range(stack_c.shape[0])) if p is not None]
+        if found:
+            fx, fy = np.median(np.array(found), axis=0)
+            out.append(MarkerMatch(str(mid), float(x), float(y), float(fx), float(fy)))
+    return out
 
 
 def _band0(series: np.ndarray) -> np.ndarray:
@@ -273,9 +304,9 @@ def suspect_records(anomalies: AnomalySet, times_s: np.ndarray, longitude_deg: f
     records = []
     for f in anomalies.features:
         inv = anomalies.inversions.get(f.id)
-        cue, conf = classify(f, inv)
         aid = f"{survey_code}-{f.id:04d}"
         day, night = _day_night_contrast(times_s, f.contrast_k, longitude_deg)
+        cue, conf = classify(f, inv, contrast_day_k=day)
         rec = {
             "anomaly_id": aid, "x": float(f.x), "y": float(f.y),
             "area_m2": float(f.area_m2), "diameter_m": float(f.diameter_m),

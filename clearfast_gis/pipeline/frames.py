@@ -65,7 +65,8 @@ def frame_poses(ctx: SurveyContext, time_s: np.ndarray, pan_deg: np.ndarray,
 
 
 def path_length_map(camera, pose: CameraPose, lattice: int = 17) -> np.ndarray:
-    """Camera-to-ground distance (m) on a lattice of pixels, float32 (lattice, lattice).
+    """Camera-to-ground distance (m) on a lattice of pixels, float32 (n, n),
+    ``n = min(lattice, W, H)``.
 
     The slant range varies smoothly over a frame, so it is computed exactly on a
     ``lattice x lattice`` grid of pixels spanning the frame corner to corner; the radiometry
@@ -73,6 +74,7 @@ def path_length_map(camera, pose: CameraPose, lattice: int = 17) -> np.ndarray:
     largest range of the frame.
     """
     w, h = camera.width, camera.height
+    lattice = max(2, min(lattice, w, h))
     us = np.linspace(0, w - 1, lattice)
     vs = np.linspace(0, h - 1, lattice)
     uu, vv = np.meshgrid(us, vs)

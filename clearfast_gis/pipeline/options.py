@@ -49,7 +49,13 @@ class ProcessOptions:
         contrast periods, weak night contrast), and a quarter detects far more shallow mines
         at a similar false-alarm rate (``benchmarks/detection_accuracy.py --sweep``).
     gamma : float or None
-        Combination threshold; None: binary OR (paper §4.6).
+        Combination threshold (paper §4.6); None: ``gamma_fraction`` of the images.
+    gamma_fraction : float or None
+        Default combination threshold as a fraction of the N x B images; None combines the
+        reconstructed blobs by binary OR. On diurnal mosaics OR lets the low-contrast dawn and
+        dusk images join neighbouring texture to a blob, which moves its centroid off the
+        mine; a quarter keeps the blob to where it is seen through much of the day
+        (``benchmarks/detection_accuracy.py --sweep``).
     invert : bool
         Estimate depth and diffusivity per anomaly with the thermal model.
     max_anomalies : int
@@ -71,6 +77,7 @@ class ProcessOptions:
     level: int | None = None
     level_fraction: float = 0.25
     gamma: float | None = None
+    gamma_fraction: float | None = 0.25
     invert: bool = True
     max_anomalies: int = 200
 

@@ -26,6 +26,7 @@ from clearfast_gis.pipeline.anomalies import (
     AnomalySet,
     characterise,
     detect_on_mosaics,
+    markers_in_mosaics,
     site_soil,
     split_markers,
     suspect_records,
@@ -392,9 +393,11 @@ def _anomaly_stage(ctx, survey, products: Path, options: ProcessOptions, state: 
                                       options.d1_m, options.d2_m, options.epsilon,
                                       options.level, options.gamma, options.max_anomalies,
                                       level_fraction=options.level_fraction,
+                                      gamma_fraction=options.gamma_fraction,
                                       progress=progress)
     marker_ids, marker_xy = _survey_markers(survey, epsg)
-    feats, marker_matches = split_markers(feats, marker_ids, marker_xy)
+    feats, _ = split_markers(feats, marker_ids, marker_xy)
+    marker_matches = markers_in_mosaics(stack, grid, marker_ids, marker_xy)
     timings["detection"] = time.perf_counter() - t0
     t0 = time.perf_counter()
     notes: list[str] = []

@@ -49,3 +49,13 @@ def test_confidence_orders_by_evidence():
     assert strong > weak and classify(_feat(0.3))[1] > steady
     assert set(CLASSES) == {"at_mine", "ap_mine", "clutter", "unknown"}
     assert [diffusivity_cue(a) for a in (1e-7, 6e-7, 2e-6)] == ["mine", "soil", "stone_metal"]
+
+
+def test_cool_by_day_is_clutter_and_weak_is_unknown():
+    # a 10 cm blob cool around midday: a stone or low-emissivity metal, not a mine
+    assert classify(_feat(0.104), contrast_day_k=-0.8)[0] == "clutter"
+    assert classify(_feat(0.104), contrast_day_k=+0.8)[0] == "ap_mine"
+    # at noise level (score below the threshold) nothing is cued as a mine or as clutter
+    assert classify(_feat(0.104, score=0.5))[0] == "unknown"
+    assert classify(_feat(0.3, circularity=0.4, score=0.5))[0] == "unknown"
+    assert classify(_feat(0.104, score=0.5), contrast_day_k=-0.8)[0] == "unknown"

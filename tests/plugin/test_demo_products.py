@@ -47,16 +47,15 @@ def test_demo_products_load_with_styles_time_and_counts(project, demo_products, 
     assert image.save(str(tmp_path / "demo.png"), "PNG")
     rgb = _rgb(image).astype(int)
     background = np.all(rgb == 255, axis=2)
-    assert background.mean() < 0.6
+    assert background.mean() < 0.7  # the fan-shaped footprint in its bounding box
     assert len({tuple(c) for c in rgb[~background][::53]}) > 20
 
 
 def test_process_survey_algorithm_runs_the_real_chain(qgis_app, demo_survey, tmp_path,
                                                       monkeypatch):
     """Processing ▸ CLEARFAST ▸ Process survey on the simulated demo, with the real toolkit."""
-    from qgis.core import QgsProcessingContext, QgsProcessingFeedback
-
     import processing
+    from qgis.core import QgsProcessingContext, QgsProcessingFeedback
 
     monkeypatch.setenv("CLEARFAST_COMMAND",
                        shlex.join([sys.executable, "-m", "clearfast_gis.cli.main"]))
