@@ -2,7 +2,8 @@
 
 Definitions (also in docs/detection.md):
 
-- centroid: mean (row, col) of the blob's pixels (pixel centres at integers); map centroid
+- centroid: mean (row, col) of the half-maximum footprint's pixels (below; pixel centres at
+  integers): the object, even when the blob took in neighbouring texture; map centroid
   ``transform * (col + 0.5, row + 0.5)`` (the rasterio affine of the grid maps pixel corners).
 - area: pixel count of the detected blob (and ``count * pixel_size_m**2``).
 - diameter: equivalent diameter ``sqrt(4 A / pi)`` of the half-maximum thermal footprint
@@ -173,10 +174,10 @@ def half_max_footprint(cube: np.ndarray, labels: np.ndarray, label: int, row: fl
 
     The amplitude of each pixel is its RMS deviation from the blob's background ring over
     the scans and bands, ``S = sqrt(mean_i (T_i - ring_i)^2)``; the footprint is the
-    connected region around the centroid where ``S`` exceeds half the blob's peak amplitude
-    (the 95th percentile of ``S`` in the blob, robust to noise), searched within the blob's
-    box grown by ``grow_px``. For a disc seen through a moderate blur its area is the disc's,
-    whereas the detector's thresholded blob also takes in part of the blur and of the
+    connected region around the blob's strongest pixel where ``S`` exceeds half the blob's
+    peak amplitude (the 95th percentile of ``S`` in the blob, robust to noise), searched within
+    the blob's box grown by ``grow_px``. For a disc seen through a moderate blur its area is
+    the disc's, whereas the detector's thresholded blob also takes in part of the blur and of the
     thermal halo.
 
     Parameters
@@ -185,7 +186,7 @@ def half_max_footprint(cube: np.ndarray, labels: np.ndarray, label: int, row: fl
     labels : int (H, W)
     label : int
     row, col : float
-        Blob centroid, pixels.
+        Blob centroid, pixels (kept for the interface; the seed is the amplitude peak).
     ring : float (N, B)
         Background ring mean per scan and band.
     bbox : (min_row, min_col, max_row, max_col)
@@ -210,10 +211,14 @@ def half_max_footprint(cube: np.ndarray, labels: np.ndarray, label: int, row: fl
     if vals.size == 0:
         rr, cc = np.nonzero(own)
         return rr + r0, cc + c0
-    above = np.nan_to_num(amp, nan=0.0) >= 0.5 * np.percentile(vals, 95)
+    peak = np.percentile(vals, 95)
+    above = np.nan_to_num(amp, nan=0.0) >= 0.5 * peak
     lab, _ = ndimage.label(above)
-    rc, cc_ = int(round(row)) - r0, int(round(col)) - c0
-    core = lab[rc, cc_] if 0 <= rc < lab.shape[0] and 0 <= cc_ < lab.shape[1] else 0
+    # seed at the blob's strongest pixel: a blob that took in neighbouring texture keeps the
+    # object where its diurnal amplitude peaks
+    own_amp = np.where(own, np.nan_to_num(amp, nan=-np.inf), -np.inf)
+    rc, cc_ = np.unravel_index(int(np.argmax(own_amp)), own_amp.shape)
+    core = lab[rc, cc_]
     if core == 0:
         ids, counts = np.unique(lab[own & (lab > 0)], return_counts=True)
         if ids.size == 0:
@@ -300,6 +305,7 @@ def blob_features(
                                     np.nan_to_num(ring), region.bbox,
                                     grow_px=int(np.ceil(r_eq)))
         fwhm_diameter = float(np.sqrt(4.0 * fr.size / np.pi))
+        row, col = float(fr.mean()), float(fc.mean())
         with np.errstate(invalid="ignore"), warnings.catch_warnings():
             warnings.simplefilter("ignore", category=RuntimeWarning)
             centre = np.nanmean(cube[:, :, fr, fc], axis=2)

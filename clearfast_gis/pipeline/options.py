@@ -16,10 +16,11 @@ class ProcessOptions:
     pixel_size_m : float or None
         Mosaic cell size, metres; None: from the mission's ground resolution.
     coregister : bool
-        Correct the geometry by image registration (paper §5.2, §3.4): per scan, the
-        platform attitude (roll, pitch, yaw of the pan/tilt base, which the RTK-DGPS does not
-        measure) is fitted to frame displacements measured by mutual information against the
-        reference scan and to the surveyed markers.
+        Correct the geometry by image registration (paper §5.2, §3.4): scan after scan in time
+        order, the platform attitude (roll, pitch, yaw of the pan/tilt base, which the
+        RTK-DGPS does not measure) is fitted to frame displacements measured by mutual
+        information against the previous scan's mosaic and to the surveyed markers (absolute
+        ground control). A slowly drifting lift (paper §6) is followed step by step.
     search_m : float
         Largest displacement searched when measuring a frame against the reference, metres.
     frame_refine : bool
@@ -31,9 +32,9 @@ class ProcessOptions:
         The paper's histogram-based radiometric seam balancing (§5.3); changes temperatures,
         so off by default and recorded in the products when on.
     reference_scan : int or None
-        Scan whose mosaic the others are co-registered to; None: the scan nearest local
-        solar noon, when the surveyed markers stand out best (sun-heated and sky-cooled
-        plates) and fix the absolute attitude of the reference.
+        Scan against which every mosaic's residual misregistration is measured (and whose
+        frames give the band offsets); None: the scan nearest local solar noon (strongest
+        contrast).
     atmosphere : bool
         Atmospheric correction (Eq. 4).
     d1_m, d2_m : float

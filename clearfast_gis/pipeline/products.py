@@ -38,6 +38,24 @@ def footprint_polygon(valid: np.ndarray, transform, simplify_m: float):
     return shapely.unary_union(polys).simplify(simplify_m)
 
 
+def write_footprint_geojson(path: Path, valid: np.ndarray, transform, epsg: int,
+                            survey_id: str) -> Path:
+    """The mosaics' footprint (cells with data) as a GeoJSON polygon in the survey CRS."""
+    import json
+
+    import shapely
+
+    from clearfast_gis.atomic import write_text
+
+    geom = footprint_polygon(valid, transform, 2 * abs(transform.a))
+    doc = {"type": "FeatureCollection", "name": "footprint",
+           "crs": {"type": "name", "properties": {"name": f"urn:ogc:def:crs:EPSG::{epsg}"}},
+           "features": [{"type": "Feature",
+                         "properties": {"survey_id": survey_id, "area_m2": float(geom.area)},
+                         "geometry": shapely.geometry.mapping(geom)}]}
+    return write_text(path, json.dumps(doc))
+
+
 def _markers_frame(survey, epsg: int, matches):
     import geopandas as gpd
 
@@ -204,18 +222,27 @@ def write_anomaly_products(products: Path, ctx, survey, anomalies, records: list
     manifest["markers"] = {"found": len(anomalies.markers),
                            "rms_offset_m": _marker_rms_m(anomalies.markers)}
     manifest["products"] = {"anomalies": "anomalies.gpkg", "report": "report.html",
-                            "mosaics": "mosaics/"}
+                            "mosaics": "mosaics/", "footprint": "footprint.geojson"}
     return manifest
 
 
 def base_manifest(survey, epsg: int, options, scan_records: dict[int, dict], fixq: dict
                   ) -> dict:
-    """The products manifest common to every stage: inputs, parameters, scans, CRS."""
+    """The products manifest common to every stage: inputs, parameters, scans, CRS.
+
+    Each scan records its time, file, the residual misregistration against the reference
+    scan (pixels), the platform attitude fitted for it with the ties behind the fit, and how
+    many frames an individual MI correction moved.
+    """
     from clearfast_gis.export.manifest import sha256_file
 
     scans = [{"scan": int(s), "time_utc": format_utc(r["time_s"]),
               "file": f"mosaics/scan_{int(s):03d}.tif",
-              "residual_px": r.get("residual_px")} for s, r in sorted(scan_records.items())]
+              "residual_px": r.get("residual_px"),
+              "attitude": r.get("attitude"),
+              "frames_corrected": sum(1 for c in r.get("corrections", {}).values()
+                                      if c.get("applied"))}
+             for s, r in sorted(scan_records.items())]
     inputs = {}
     for key in ("survey", "mission", "frames", "blackbody_frames", "blackbody_log", "gnss",
                 "weather", "soil"):

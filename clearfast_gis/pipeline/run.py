@@ -40,7 +40,7 @@ from clearfast_gis.pipeline.frames import (
 )
 from clearfast_gis.pipeline.options import ProcessOptions
 from clearfast_gis.pipeline.products import base_manifest as _base_manifest
-from clearfast_gis.pipeline.products import write_anomaly_products
+from clearfast_gis.pipeline.products import write_anomaly_products, write_footprint_geojson
 from clearfast_gis.pipeline.state import RunState
 from clearfast_gis.progress import NULL_PROGRESS, Progress
 from clearfast_gis.radiometry.stage import calibration_events, weather_at
@@ -149,14 +149,20 @@ def _check_blackbody_pairs(events, survey) -> None:
                 f"{DEFAULT_MIN_CONTRAST_COUNTS:g}", survey.label("blackbody_frames"))
 
 
-def _scan_order(scans: np.ndarray, reference: int) -> list[int]:
-    """Processing order: the reference, then outwards (later scans, then earlier ones), so
-    each scan starts from the attitude of its processed neighbour."""
-    scans = sorted(int(s) for s in scans)
-    if reference not in scans:
-        raise InvalidInput(f"reference scan {reference} is not in the survey", field="scans")
-    k = scans.index(reference)
-    return [reference] + scans[k + 1:] + scans[:k][::-1]
+def _temporal_residuals(products: Path, scan_records: dict[int, dict], ref: int,
+                        measure: bool) -> None:
+    """Residual misregistration of every scan's mosaic against the reference scan's (pixels),
+    stored in ``scan_records[scan]["residual_px"]`` (None for the reference itself or when it
+    cannot be measured)."""
+    reference = read_mosaic(products / mosaic_rel(ref)).bands_c[0] if measure else None
+    for scan, rec in scan_records.items():
+        rec["residual_px"] = None
+        if reference is None or scan == ref:
+            continue
+        r = temporal_residual(reference, read_mosaic(products / mosaic_rel(scan)).bands_c[0])
+        rec["residual_px"] = None if math.isnan(r.shift_px) else r.shift_px
+    for rec in scan_records.values():
+        rec["reference_scan"] = ref
 
 
 def _neighbour(scan: int, done: dict[int, tuple]) -> tuple:
@@ -271,7 +277,7 @@ def process_survey(survey_path: str | Path, products: str | Path,
     if not resume:
         state.units = {}
     ref = _reference_scan(survey, options)
-    order = _scan_order(survey.scans, ref)
+    order = sorted(int(x) for x in survey.scans)
 
     t0 = time.perf_counter()
     ctx.band_offsets = _band_offsets(ctx, state, ref, progress)
@@ -285,7 +291,7 @@ def process_survey(survey_path: str | Path, products: str | Path,
     t0 = time.perf_counter()
     n_pos = len(survey.positions)
     progress.start("mosaics", len(order) * n_pos)
-    reference_values = None
+    previous_values = None
     attitudes: dict[int, tuple] = {}
     _, marker_xy = _survey_markers(survey, epsg)
     scan_records: dict[int, dict] = {}
@@ -304,22 +310,18 @@ def process_survey(survey_path: str | Path, products: str | Path,
             attitude = _neighbour(scan, attitudes)
             if options.coregister:
                 fit = scan_attitude(frames, ctx.camera, grid, len(survey.bands),
-                                    reference_values, marker_xy, attitude,
+                                    previous_values, marker_xy, attitude,
                                     search_m=options.search_m)
                 attitude = fit.attitude_rpy_deg
             attitudes[scan] = attitude
             m = build_scan_mosaic(reposed(frames, attitude), ctx.camera, grid,
                                   len(survey.bands),
                                   coregister=options.coregister and options.frame_refine,
-                                  reference=reference_values,
+                                  reference=previous_values,
                                   max_shift_m=options.max_shift_m,
                                   max_angle_deg=options.max_angle_deg,
                                   seam_balance=options.seam_balance, progress=progress)
             t_start, t_mean = _scan_time(survey, scan)
-            residual = None
-            if reference_values is not None and options.coregister:
-                r = temporal_residual(reference_values[0], m.values[0])
-                residual = None if math.isnan(r.shift_px) else r.shift_px
             write_cog(products / rel, m.values, grid.transform, epsg, descriptions,
                       tags={"CLEARFAST_SURVEY_ID": survey.manifest["survey_id"],
                             "CLEARFAST_SCAN": scan,
@@ -331,19 +333,25 @@ def process_survey(survey_path: str | Path, products: str | Path,
                    "attitude": None if fit is None else fit.as_dict(),
                    "corrections": {str(k): _correction_dict(v)
                                    for k, v in m.corrections.items()},
-                   "residual_px": residual, "seconds": time.perf_counter() - t_scan,
+                   "seconds": time.perf_counter() - t_scan,
                    "seam_gains": {str(k): list(v) for k, v in m.seam_gains.items()}}
             state.finish(unit, rec, [rel])
-        scan_records[scan] = rec
-        if scan == ref:
-            reference_values = read_mosaic(products / rel).bands_c
+        scan_records[scan] = dict(rec)
+        previous_values = read_mosaic(products / rel).bands_c
     progress.close()
+    _temporal_residuals(products, scan_records, ref, options.coregister)
     timings["mosaics"] = time.perf_counter() - t0
 
+    valid = None
+    for scan in sorted(scan_records):
+        m = read_mosaic(products / mosaic_rel(scan)).bands_c[0]
+        valid = np.isfinite(m) if valid is None else valid | np.isfinite(m)
+    write_footprint_geojson(products / "footprint.geojson", valid, grid.transform, epsg,
+                            survey.manifest["survey_id"])
     if until == "mosaics":
         manifest = _base_manifest(survey, epsg, options, scan_records,
                                   _fix_quality_summary(ctx))
-        manifest["products"] = {"mosaics": "mosaics/"}
+        manifest["products"] = {"mosaics": "mosaics/", "footprint": "footprint.geojson"}
     else:
         if redo_anomalies:
             state.drop("anomalies")

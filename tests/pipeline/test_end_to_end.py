@@ -42,6 +42,13 @@ def test_products_layout(demo_products):
     assert (demo_products / "report.html").is_file()
     assert (demo_products / "figures" / "overview.png").is_file()
     assert set(manifest["timings_s"]) >= {"mosaics", "detection", "characterisation", "total"}
+    import pyogrio
+
+    fp = pyogrio.read_dataframe(demo_products / "footprint.geojson")
+    assert fp.crs.to_epsg() == 32636 and len(fp) == 1
+    assert fp.geometry.iloc[0].area > 30.0  # m2
+    for s in manifest["scans"]:
+        assert len(s["attitude"]["attitude_rpy_deg"]) == 3
 
 
 def test_mosaics_are_valid_cogs_in_degrees_c(demo_products):
