@@ -53,7 +53,10 @@ def write_footprint_geojson(path: Path, valid: np.ndarray, transform, epsg: int,
            "features": [{"type": "Feature",
                          "properties": {"survey_id": survey_id, "area_m2": float(geom.area)},
                          "geometry": shapely.geometry.mapping(geom)}]}
-    return write_text(path, json.dumps(doc))
+    text = json.dumps(doc)
+    if path.exists() and path.read_text() == text:
+        return path  # unchanged: a resumed run leaves finished products untouched
+    return write_text(path, text)
 
 
 def _markers_frame(survey, epsg: int, matches):

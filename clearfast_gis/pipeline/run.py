@@ -234,6 +234,55 @@ def _band_offsets(ctx: SurveyContext, state: RunState, reference: int, progress:
     return offsets
 
 
+class _ScanJob:
+    """Builds one scan's mosaic (attitude fit, projection, COG, run-state record)."""
+
+    def __init__(self, ctx, grid, epsg, descriptions, air_at, marker_xy, options, products,
+                 state, progress) -> None:
+        self.ctx, self.grid, self.epsg = ctx, grid, epsg
+        self.descriptions, self.air_at, self.marker_xy = descriptions, air_at, marker_xy
+        self.options, self.products, self.state, self.progress = (options, products, state,
+                                                                  progress)
+
+    def build(self, scan: int, reference: np.ndarray | None, init_attitude: tuple,
+              refit_from: int | None = None) -> dict:
+        """Mosaic ``scan``, its attitude fitted against ``reference`` (the neighbouring
+        scan's mosaic) and the markers; write the COG and record the unit."""
+        ctx, options, survey = self.ctx, self.options, self.ctx.survey
+        t_scan = time.perf_counter()
+        frames = list(scan_frames(ctx, scan, self.air_at, atmosphere=options.atmosphere))
+        fit = None
+        attitude = init_attitude
+        if options.coregister:
+            fit = scan_attitude(frames, ctx.camera, self.grid, len(survey.bands), reference,
+                                self.marker_xy, attitude, search_m=options.search_m)
+            attitude = fit.attitude_rpy_deg
+        progress = self.progress if refit_from is None else NULL_PROGRESS
+        m = build_scan_mosaic(reposed(frames, attitude), ctx.camera, self.grid,
+                              len(survey.bands),
+                              coregister=options.coregister and options.frame_refine,
+                              reference=reference, max_shift_m=options.max_shift_m,
+                              max_angle_deg=options.max_angle_deg,
+                              seam_balance=options.seam_balance, progress=progress)
+        t_start, t_mean = _scan_time(survey, scan)
+        rel = mosaic_rel(scan)
+        write_cog(self.products / rel, m.values, self.grid.transform, self.epsg,
+                  self.descriptions,
+                  tags={"CLEARFAST_SURVEY_ID": survey.manifest["survey_id"],
+                        "CLEARFAST_SCAN": scan,
+                        "CLEARFAST_SEAM_BALANCE": options.seam_balance},
+                  scan_time_s=t_mean)
+        with atomic_path(_source_path(self.products, scan)) as tmp, open(tmp, "wb") as fh:
+            np.save(fh, m.source)
+        rec = {"scan": scan, "time_s": t_mean, "start_s": t_start,
+               "attitude": None if fit is None else fit.as_dict(),
+               "corrections": {str(k): _correction_dict(v) for k, v in m.corrections.items()},
+               "seconds": time.perf_counter() - t_scan, "refit_from": refit_from,
+               "seam_gains": {str(k): list(v) for k, v in m.seam_gains.items()}}
+        self.state.finish(f"scan_{scan:03d}", rec, [rel])
+        return rec
+
+
 def process_survey(survey_path: str | Path, products: str | Path,
                    options: ProcessOptions | None = None, resume: bool = True,
                    progress: Progress = NULL_PROGRESS, until: str = "products",
@@ -291,53 +340,34 @@ def process_survey(survey_path: str | Path, products: str | Path,
     t0 = time.perf_counter()
     n_pos = len(survey.positions)
     progress.start("mosaics", len(order) * n_pos)
-    previous_values = None
     attitudes: dict[int, tuple] = {}
     _, marker_xy = _survey_markers(survey, epsg)
     scan_records: dict[int, dict] = {}
+    job = _ScanJob(ctx, grid, epsg, descriptions, air_at, marker_xy, options, products, state,
+                   progress)
+    previous_values = None
     for scan in order:
-        unit = f"scan_{scan:03d}"
-        rel = mosaic_rel(scan)
-        rec = state.done(unit)
+        rec = state.done(f"scan_{scan:03d}")
         if rec is not None:
             progress.advance(n_pos, scan=scan, resumed=True)
-            if rec.get("attitude"):
-                attitudes[scan] = tuple(rec["attitude"]["attitude_rpy_deg"])
         else:
-            t_scan = time.perf_counter()
-            frames = list(scan_frames(ctx, scan, air_at, atmosphere=options.atmosphere))
-            fit = None
-            attitude = _neighbour(scan, attitudes)
-            if options.coregister:
-                fit = scan_attitude(frames, ctx.camera, grid, len(survey.bands),
-                                    previous_values, marker_xy, attitude,
-                                    search_m=options.search_m)
-                attitude = fit.attitude_rpy_deg
-            attitudes[scan] = attitude
-            m = build_scan_mosaic(reposed(frames, attitude), ctx.camera, grid,
-                                  len(survey.bands),
-                                  coregister=options.coregister and options.frame_refine,
-                                  reference=previous_values,
-                                  max_shift_m=options.max_shift_m,
-                                  max_angle_deg=options.max_angle_deg,
-                                  seam_balance=options.seam_balance, progress=progress)
-            t_start, t_mean = _scan_time(survey, scan)
-            write_cog(products / rel, m.values, grid.transform, epsg, descriptions,
-                      tags={"CLEARFAST_SURVEY_ID": survey.manifest["survey_id"],
-                            "CLEARFAST_SCAN": scan,
-                            "CLEARFAST_SEAM_BALANCE": options.seam_balance},
-                      scan_time_s=t_mean)
-            with atomic_path(_source_path(products, scan)) as tmp, open(tmp, "wb") as fh:
-                np.save(fh, m.source)
-            rec = {"scan": scan, "time_s": t_mean, "start_s": t_start,
-                   "attitude": None if fit is None else fit.as_dict(),
-                   "corrections": {str(k): _correction_dict(v)
-                                   for k, v in m.corrections.items()},
-                   "seconds": time.perf_counter() - t_scan,
-                   "seam_gains": {str(k): list(v) for k, v in m.seam_gains.items()}}
-            state.finish(unit, rec, [rel])
+            rec = job.build(scan, previous_values, _neighbour(scan, attitudes))
+        if rec.get("attitude"):
+            attitudes[scan] = tuple(rec["attitude"]["attitude_rpy_deg"])
         scan_records[scan] = dict(rec)
-        previous_values = read_mosaic(products / rel).bands_c
+        previous_values = read_mosaic(products / mosaic_rel(scan)).bands_c
+    # the scans before the first one anchored by markers inherit its placement backwards
+    anchored = [s for s in order if (scan_records[s].get("attitude") or {})
+                .get("n_marker_ties", 0) >= 2]
+    if options.coregister and anchored:
+        for k in range(order.index(anchored[0]) - 1, -1, -1):
+            scan, nxt = order[k], order[k + 1]
+            if scan_records[scan].get("refit_from") == nxt:
+                continue
+            rec = job.build(scan, read_mosaic(products / mosaic_rel(nxt)).bands_c,
+                            attitudes[scan], refit_from=nxt)
+            attitudes[scan] = tuple(rec["attitude"]["attitude_rpy_deg"])
+            scan_records[scan] = dict(rec)
     progress.close()
     _temporal_residuals(products, scan_records, ref, options.coregister)
     timings["mosaics"] = time.perf_counter() - t0

@@ -106,7 +106,7 @@ def assert_complete(products: Path) -> None:
         elif rel.endswith(".gpkg"):
             for name, _ in pyogrio.list_layers(p):
                 pyogrio.read_dataframe(p, layer=name)
-        elif rel.endswith(".json"):
+        elif rel.endswith((".json", ".geojson")):
             json.loads(p.read_text())
         elif rel.endswith(".html"):
             assert p.read_text().rstrip().endswith("</html>"), rel
