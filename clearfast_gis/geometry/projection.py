@@ -223,8 +223,11 @@ def frame_footprint(camera: Camera, pose: CameraPose, z: float = 0.0,
         return Polygon()
     poly = Polygon(pts)
     if not poly.is_valid:
-        poly = shapely.make_valid(poly)
-        if not isinstance(poly, Polygon):
-            poly = shapely.unary_union(
-                [g for g in getattr(poly, "geoms", [poly]) if isinstance(g, Polygon)])
+        # an outline cut at the range limit can cross itself: keep its polygonal parts, or the
+        # convex hull of the outline points when nothing polygonal survives the repair
+        parts = [g for g in shapely.get_parts(shapely.make_valid(poly))
+                 if g.geom_type in ("Polygon", "MultiPolygon") and not g.is_empty]
+        poly = shapely.unary_union(parts) if parts else shapely.MultiPoint(pts).convex_hull
+        if poly.is_empty or poly.geom_type not in ("Polygon", "MultiPolygon"):
+            poly = shapely.MultiPoint(pts).convex_hull
     return poly

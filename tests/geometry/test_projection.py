@@ -119,3 +119,14 @@ def test_viewing_geometry_maps():
     g = GroundGrid(-0.5, 0.5, 1.0, 1, 1)  # straight below
     assert incidence_angle_map(pose, g)[0, 0] == pytest.approx(0.0, abs=1e-6)
     assert off_axis_angle_map(pose, g)[0, 0] == pytest.approx(45.0, abs=1e-5)
+
+
+def test_far_reaching_outline_still_bounds_the_seen_cells():
+    """Regression (found by hypothesis): a shallow view whose outline is cut at the grid's
+    reach and crosses itself must still give the window of the seen cells."""
+    camera = CAMERAS[0]
+    pose = CameraPose([0.3, -0.7, 8.0], 0.0, -20.0)
+    mx, _ = ground_maps(camera, pose, GRID)
+    _, _, seen = _reference(camera, pose, GRID)
+    assert seen.sum() > 10_000
+    assert np.array_equal(mx >= 0, seen)
