@@ -89,8 +89,9 @@ def scan_attitude(frames: list[FrameInput], camera, grid: GroundGrid, n_bands: i
     grid : GroundGrid
         The mosaic grid.
     n_bands : int
-    reference : float32 (B, H, W) or None
-        The reference scan's mosaic (None for the reference scan itself).
+    reference : float32 (B, H, W), list of them, or None
+        Mosaics to measure the frames against (the previous scan's, and the reference
+        scan's so that errors do not accumulate along the chain); None for the first scan.
     marker_xy : float (M, 2)
         Surveyed markers, survey CRS metres.
     init_rpy_deg : (roll, pitch, yaw)
@@ -116,7 +117,9 @@ def scan_attitude(frames: list[FrameInput], camera, grid: GroundGrid, n_bands: i
             if tie is not None:
                 ties.append(tie)
                 n_marker += 1
-    if reference is not None:
+    references = [] if reference is None else (
+        list(reference) if isinstance(reference, list | tuple) else [reference])
+    if references:
         pick = np.unique(np.linspace(0, len(placed) - 1, min(n_samples, len(placed)))
                          .round().astype(int))
         for i in pick:
@@ -124,13 +127,14 @@ def scan_attitude(frames: list[FrameInput], camera, grid: GroundGrid, n_bands: i
             if pf is None:
                 continue
             rs, cs = pf.window.slices
-            _, corr, _ = coregister_projected(pf, reference[:, rs, cs], grid.pixel_size,
-                                              max_shift_m=search_m, max_angle_deg=0.0)
-            if corr.applied:
-                xc = grid.x0 + (pf.window.col0 + pf.window.width / 2) * grid.pixel_size
-                yc = grid.y0 - (pf.window.row0 + pf.window.height / 2) * grid.pixel_size
-                ties.append(GroundTie(int(i), xc, yc, corr.dx_m, corr.dy_m, 1.0))
-                n_image += 1
+            xc = grid.x0 + (pf.window.col0 + pf.window.width / 2) * grid.pixel_size
+            yc = grid.y0 - (pf.window.row0 + pf.window.height / 2) * grid.pixel_size
+            for ref in references:
+                _, corr, _ = coregister_projected(pf, ref[:, rs, cs], grid.pixel_size,
+                                                  max_shift_m=search_m, max_angle_deg=0.0)
+                if corr.applied:
+                    ties.append(GroundTie(int(i), xc, yc, corr.dx_m, corr.dy_m, 1.0))
+                    n_image += 1
     if len(ties) < 2:
         return AttitudeFit(init, n_marker, n_image, 0, float("nan"))
     poses = [f.pose for f in frames]

@@ -244,24 +244,26 @@ class _ScanJob:
         self.options, self.products, self.state, self.progress = (options, products, state,
                                                                   progress)
 
-    def build(self, scan: int, reference: np.ndarray | None, init_attitude: tuple,
+    def build(self, scan: int, references: list[np.ndarray] | None, init_attitude: tuple,
               refit_from: int | None = None) -> dict:
-        """Mosaic ``scan``, its attitude fitted against ``reference`` (the neighbouring
-        scan's mosaic) and the markers; write the COG and record the unit."""
+        """Mosaic ``scan``, its attitude fitted against ``references`` (the neighbouring
+        scan's mosaic, and the reference scan's so that errors do not accumulate) and the
+        markers; write the COG and record the unit."""
         ctx, options, survey = self.ctx, self.options, self.ctx.survey
         t_scan = time.perf_counter()
         frames = list(scan_frames(ctx, scan, self.air_at, atmosphere=options.atmosphere))
         fit = None
         attitude = init_attitude
         if options.coregister:
-            fit = scan_attitude(frames, ctx.camera, self.grid, len(survey.bands), reference,
+            fit = scan_attitude(frames, ctx.camera, self.grid, len(survey.bands), references,
                                 self.marker_xy, attitude, search_m=options.search_m)
             attitude = fit.attitude_rpy_deg
         progress = self.progress if refit_from is None else NULL_PROGRESS
         m = build_scan_mosaic(reposed(frames, attitude), ctx.camera, self.grid,
                               len(survey.bands),
                               coregister=options.coregister and options.frame_refine,
-                              reference=reference, max_shift_m=options.max_shift_m,
+                              reference=references[0] if references else None,
+                              max_shift_m=options.max_shift_m,
                               max_angle_deg=options.max_angle_deg,
                               seam_balance=options.seam_balance, progress=progress)
         t_start, t_mean = _scan_time(survey, scan)
@@ -345,17 +347,20 @@ def process_survey(survey_path: str | Path, products: str | Path,
     scan_records: dict[int, dict] = {}
     job = _ScanJob(ctx, grid, epsg, descriptions, air_at, marker_xy, options, products, state,
                    progress)
-    previous_values = None
+    previous_values = reference_values = None
     for scan in order:
         rec = state.done(f"scan_{scan:03d}")
         if rec is not None:
             progress.advance(n_pos, scan=scan, resumed=True)
         else:
-            rec = job.build(scan, previous_values, _neighbour(scan, attitudes))
+            refs = [v for v in (previous_values, reference_values) if v is not None]
+            rec = job.build(scan, refs or None, _neighbour(scan, attitudes))
         if rec.get("attitude"):
             attitudes[scan] = tuple(rec["attitude"]["attitude_rpy_deg"])
         scan_records[scan] = dict(rec)
         previous_values = read_mosaic(products / mosaic_rel(scan)).bands_c
+        if scan == ref:
+            reference_values = previous_values
     # the scans before the first one anchored by markers inherit its placement backwards
     anchored = [s for s in order if (scan_records[s].get("attitude") or {})
                 .get("n_marker_ties", 0) >= 2]
@@ -364,8 +369,10 @@ def process_survey(survey_path: str | Path, products: str | Path,
             scan, nxt = order[k], order[k + 1]
             if scan_records[scan].get("refit_from") == nxt:
                 continue
-            rec = job.build(scan, read_mosaic(products / mosaic_rel(nxt)).bands_c,
-                            attitudes[scan], refit_from=nxt)
+            refs = [read_mosaic(products / mosaic_rel(nxt)).bands_c]
+            if reference_values is not None and nxt != ref:
+                refs.append(reference_values)
+            rec = job.build(scan, refs, attitudes[scan], refit_from=nxt)
             attitudes[scan] = tuple(rec["attitude"]["attitude_rpy_deg"])
             scan_records[scan] = dict(rec)
     progress.close()
