@@ -11,7 +11,7 @@ Opening the state also
   naming it, before any work;
 - takes an exclusive lock (``.clearfast/lock``, released by the kernel however the process
   ends, ``SIGKILL`` included), so two processes never write into one products folder;
-- removes temporary files left by a killed run (``.NAME.XXXX.ext.part``, see
+- removes temporary files left by a killed run (``.NAME.<random>.ext.part``, see
   :mod:`clearfast_gis.atomic`): under the lock no live writer owns them.
 """
 

@@ -16,8 +16,7 @@ from clearfast_gis.detection.imageio import read_image
 from clearfast_gis.detection.multiscale import detect_snapshot_multiscale
 from clearfast_gis.errors import InvalidInput
 
-COLOMBIA = Path(__file__).resolve().parents[2] / ".." / "shared" / "data" / \
-    "thermal-landmines-colombia"
+COLOMBIA = Path(__file__).resolve().parents[1] / "data" / "colombia"
 
 
 def _scene(rng):
@@ -85,11 +84,12 @@ def test_bad_image_is_one_line_error(tmp_path):
 
 
 def _real_images(n=4):
-    files = sorted(glob.glob(str(COLOMBIA / "valid" / "images" / "*Mine_1cm*.jpg")))
-    return files[:: max(1, len(files) // n)][:n]
+    """Four 1 cm-deep snapshots shipped in tests/data/colombia (see its README)."""
+    files = sorted(glob.glob(str(COLOMBIA / "images" / "*Mine_1cm*.jpg")))
+    assert len(files) == n
+    return files
 
 
-@pytest.mark.skipif(not COLOMBIA.is_dir(), reason="Colombia data set not present")
 def test_real_snapshots_find_the_mine():
     found = 0
     files = _real_images()
