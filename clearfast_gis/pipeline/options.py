@@ -6,6 +6,11 @@ import hashlib
 import json
 from dataclasses import asdict, dataclass, fields
 
+MOSAIC_PARAMETERS = ("pixel_size_m", "coregister", "search_m", "attitude_samples",
+                     "frame_refine", "max_shift_m", "max_angle_deg", "seam_balance",
+                     "reference_scan", "atmosphere")
+"""The parameters that change the mosaics (the others only change the anomalies)."""
+
 
 @dataclass(frozen=True)
 class ProcessOptions:
@@ -23,6 +28,8 @@ class ProcessOptions:
         ground control). A slowly drifting lift (paper §6) is followed step by step.
     search_m : float
         Largest displacement searched when measuring a frame against the reference, metres.
+    attitude_samples : int
+        Frames per scan measured against each reference for the attitude fit.
     frame_refine : bool
         After the attitude fit, also shift each frame individually by mutual information
         against the mosaic so far / the reference (bounded by ``max_shift_m``).
@@ -66,6 +73,7 @@ class ProcessOptions:
     pixel_size_m: float | None = None
     coregister: bool = True
     search_m: float = 0.6
+    attitude_samples: int = 40
     frame_refine: bool = False
     max_shift_m: float = 0.1
     max_angle_deg: float = 0.0
@@ -84,9 +92,7 @@ class ProcessOptions:
 
     def mosaic_key(self) -> str:
         """Hash of the parameters that change the mosaics."""
-        keys = ("pixel_size_m", "coregister", "search_m", "frame_refine", "max_shift_m",
-                "max_angle_deg", "seam_balance", "reference_scan", "atmosphere")
-        return _digest({k: getattr(self, k) for k in keys})
+        return _digest({k: getattr(self, k) for k in MOSAIC_PARAMETERS})
 
     def detection_key(self) -> str:
         """Hash of every parameter (the anomalies depend on all of them)."""

@@ -38,7 +38,7 @@ from clearfast_gis.pipeline.frames import (
     frame_pose,
     scan_frames,
 )
-from clearfast_gis.pipeline.options import ProcessOptions
+from clearfast_gis.pipeline.options import MOSAIC_PARAMETERS, ProcessOptions
 from clearfast_gis.pipeline.products import base_manifest as _base_manifest
 from clearfast_gis.pipeline.products import write_anomaly_products, write_footprint_geojson
 from clearfast_gis.pipeline.state import RunState
@@ -256,7 +256,8 @@ class _ScanJob:
         attitude = init_attitude
         if options.coregister:
             fit = scan_attitude(frames, ctx.camera, self.grid, len(survey.bands), references,
-                                self.marker_xy, attitude, search_m=options.search_m)
+                                self.marker_xy, attitude, search_m=options.search_m,
+                                n_samples=options.attitude_samples)
             attitude = fit.attitude_rpy_deg
         progress = self.progress if refit_from is None else NULL_PROGRESS
         m = build_scan_mosaic(reposed(frames, attitude), ctx.camera, self.grid,
@@ -507,8 +508,7 @@ def redetect(products: str | Path, options: ProcessOptions,
         raise InvalidInput("the survey folder recorded in products.json is not available",
                            products / "products.json", "survey_path")
     old = manifest.get("parameters", {})
-    keep = {k: old[k] for k in ("pixel_size_m", "coregister", "max_shift_m", "max_angle_deg",
-                                "seam_balance", "reference_scan", "atmosphere") if k in old}
+    keep = {k: old[k] for k in MOSAIC_PARAMETERS if k in old}
     opts = dataclasses.replace(options, **keep)
     return process_survey(survey_path, products, opts, resume=True, progress=progress,
                           redo_anomalies=True)
