@@ -46,26 +46,25 @@ def _hhmmss(time_s: float) -> str:
     return f"{h:02d}{m:02d}{s:02d}.{frac:03d}"
 
 
-def _lat_field(lat_deg: float) -> tuple[str, str]:
-    if not math.isfinite(lat_deg):
+def _angle_field(value_deg: float, degree_digits: int, positive: str, negative: str
+                 ) -> tuple[str, str]:
+    """An angle as NMEA ``(d)ddmm.mmmmmmm`` and its hemisphere letter ("" when not finite)."""
+    if not math.isfinite(value_deg):
         return "", ""
-    a = abs(lat_deg)
+    a = abs(value_deg)
     d = int(a)
     minutes = (a - d) * 60.0
     if round(minutes, 7) >= 60.0:
         d, minutes = d + 1, 0.0
-    return f"{d:02d}{minutes:010.7f}", ("N" if lat_deg >= 0 else "S")
+    return f"{d:0{degree_digits}d}{minutes:010.7f}", (positive if value_deg >= 0 else negative)
+
+
+def _lat_field(lat_deg: float) -> tuple[str, str]:
+    return _angle_field(lat_deg, 2, "N", "S")
 
 
 def _lon_field(lon_deg: float) -> tuple[str, str]:
-    if not math.isfinite(lon_deg):
-        return "", ""
-    a = abs(lon_deg)
-    d = int(a)
-    minutes = (a - d) * 60.0
-    if round(minutes, 7) >= 60.0:
-        d, minutes = d + 1, 0.0
-    return f"{d:03d}{minutes:010.7f}", ("E" if lon_deg >= 0 else "W")
+    return _angle_field(lon_deg, 3, "E", "W")
 
 
 def gga_sentence(time_s: float, lat_deg: float, lon_deg: float, alt_m: float, quality: int,

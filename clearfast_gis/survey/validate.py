@@ -76,6 +76,16 @@ class ValidationReport:
                 "warnings": rows(self.warnings), "summary": self.summary}
 
 
+def _report_gaps(ck, label: str, field: str, time_s, limit_s: float) -> list[dict]:
+    """Warn about gaps longer than ``limit_s`` in a log; return them for the summary."""
+    gaps = _gaps(time_s, limit_s)
+    if gaps:
+        a, d = max(gaps, key=lambda g: g[1])
+        ck.warn(label, field, f"{len(gaps)} gap(s) longer than {limit_s:g} s, "
+                f"longest {d:.0f} s at {format_utc(a, 'seconds')}")
+    return [{"start_utc": format_utc(a, "seconds"), "length_s": d} for a, d in gaps]
+
+
 def _gaps(time_s: np.ndarray, threshold_s: float) -> list[tuple[float, float]]:
     t = np.sort(time_s[np.isfinite(time_s)])
     if t.size < 2:
@@ -287,13 +297,7 @@ def validate_survey(path: str | os.PathLike, gnss_gap_s: float = 10.0,
             elif counts.get(FIX_RTK_FLOAT, 0):
                 ck.warn(label, "GGA", f"{counts[FIX_RTK_FLOAT]} RTK float epoch(s)")
             order(label, log.time_s)
-            gaps = _gaps(log.time_s, gnss_gap_s)
-            summary["gnss_gaps"] = [{"start_utc": format_utc(a, "seconds"), "length_s": d}
-                                    for a, d in gaps]
-            if gaps:
-                a, d = max(gaps, key=lambda g: g[1])
-                ck.warn(label, "time", f"{len(gaps)} gap(s) longer than {gnss_gap_s:g} s, "
-                        f"longest {d:.0f} s at {format_utc(a, 'seconds')}")
+            summary["gnss_gaps"] = _report_gaps(ck, label, "time", log.time_s, gnss_gap_s)
             valid = log.fix_quality > 0
             coverage(label, log.time_s[valid], "position fixes")
 
@@ -305,13 +309,8 @@ def validate_survey(path: str | os.PathLike, gnss_gap_s: float = 10.0,
             if len(w) == 0:
                 ck.problem(label, "", "no records")
             order(label, w.time_s)
-            gaps = _gaps(w.time_s, weather_gap_s)
-            summary["weather_gaps"] = [{"start_utc": format_utc(a, "seconds"), "length_s": d}
-                                       for a, d in gaps]
-            if gaps:
-                a, d = max(gaps, key=lambda g: g[1])
-                ck.warn(label, "TIMESTAMP", f"{len(gaps)} gap(s) longer than {weather_gap_s:g} "
-                        f"s, longest {d:.0f} s at {format_utc(a, 'seconds')}")
+            summary["weather_gaps"] = _report_gaps(ck, label, "TIMESTAMP", w.time_s,
+                                                   weather_gap_s)
             for name in ("air_temp_c", "rh_pct", "pressure_hpa", "wind_ms", "solar_wm2"):
                 v = getattr(w, name)
                 nn = int(np.count_nonzero(np.isnan(v)))
