@@ -101,8 +101,8 @@ def detect_anomalies(
     d1_px: float,
     d2_px: float,
     epsilon: float = 0.01,
-    level: float | None = None,
-    gamma: float | None = None,
+    level: float | np.ndarray | None = None,
+    gamma: float | np.ndarray | None = None,
     polarity: str = "both",
     progress: Progress = NULL_PROGRESS,
 ) -> DetectionResult:
@@ -120,9 +120,11 @@ def detect_anomalies(
         into are removed.
     epsilon : float
         Histogram-stretch fraction (paper §4.2).
-    level : float, optional
+    level : float or float (H, W), optional
         Majority-vote level l; a pixel is kept where ``sum_i O_i >= l``. Default ``N*B / 2``.
-    gamma : float, optional
+        A map gives each pixel its own level (e.g. relative to the images that cover it when
+        the footprint changes from scan to scan).
+    gamma : float or float (H, W), optional
         Combination threshold: ``R = sum_i L_i >= gamma``; None combines with OR.
     polarity : {'both', 'hot', 'cold'}
         Which anomalies to look for.
@@ -139,7 +141,8 @@ def detect_anomalies(
         raise ValueError(f"need D1 > D2 >= 1 pixel, got D1={d1_px}, D2={d2_px}")
     images, n, b = as_image_stack(stack)
     k = n * b
-    level = k / 2.0 if level is None else float(level)
+    level = k / 2.0 if level is None else (
+        np.asarray(level, dtype=np.float64) if np.ndim(level) else float(level))
     shape = images.shape[1:]
     want = {"hot": polarity in ("both", "hot"), "cold": polarity in ("both", "cold")}
     g = {p: np.zeros((k, *shape), dtype=bool) for p in ("hot", "cold")}

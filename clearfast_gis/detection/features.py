@@ -188,7 +188,7 @@ def half_max_footprint(cube: np.ndarray, labels: np.ndarray, label: int, row: fl
     row, col : float
         Blob centroid, pixels (kept for the interface; the seed is the amplitude peak).
     ring : float (N, B)
-        Background ring mean per scan and band.
+        Background ring mean per scan and band (NaN: that scan and band are left out).
     bbox : (min_row, min_col, max_row, max_col)
     grow_px : int
 
@@ -277,7 +277,9 @@ def blob_features(
     if noise not in ("ring", "image"):
         raise ValueError(f"noise must be 'ring' or 'image', got {noise!r}")
     cube = images.reshape(n, b, *labels.shape)
-    valid = np.all(np.isfinite(images), axis=0)
+    # a pixel seen in some scans only (a footprint that moves, paper §6) still serves the
+    # ring of those scans: every mean below is over the scans that saw it
+    valid = np.any(np.isfinite(images), axis=0)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", category=RuntimeWarning)
         image_noise = np.nanstd(cube.reshape(n, b, -1), axis=2)
@@ -302,7 +304,7 @@ def blob_features(
             noise_k = (np.nanstd(cube[:, :, rr, cc], axis=2) if rr.size > 1
                        else np.full((n, b), np.nan))
         fr, fc = half_max_footprint(cube, labels, int(region.label), row, col,
-                                    np.nan_to_num(ring), region.bbox,
+                                    ring, region.bbox,
                                     grow_px=int(np.ceil(r_eq)))
         fwhm_diameter = float(np.sqrt(4.0 * fr.size / np.pi))
         row, col = float(fr.mean()), float(fc.mean())
@@ -310,11 +312,11 @@ def blob_features(
             warnings.simplefilter("ignore", category=RuntimeWarning)
             centre = np.nanmean(cube[:, :, fr, fc], axis=2)
         contrast = centre - ring
-        c_scan = np.nanmean(contrast, axis=1) if b > 1 else contrast[:, 0]
         sigma = noise_k if noise == "ring" else image_noise
         cnr = np.abs(contrast) / np.maximum(sigma, 1e-6)
-        with warnings.catch_warnings():  # an empty ring gives an all-NaN row
+        with warnings.catch_warnings():  # a scan that did not see the blob: an all-NaN row
             warnings.simplefilter("ignore", category=RuntimeWarning)
+            c_scan = np.nanmean(contrast, axis=1) if b > 1 else contrast[:, 0]
             cnr_scan = np.nanmax(cnr, axis=1)
         pol = _polarity(detection, rows, cols, c_scan, cnr_scan, n)
         seen = pol != 0

@@ -16,6 +16,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from clearfast_gis.geometry.pose import CameraPose
+from clearfast_gis.mosaic.adjust import moved_point
 
 
 @dataclass(frozen=True)
@@ -55,10 +56,7 @@ def _predicted(camera, poses: list[CameraPose], ties: list[GroundTie],
     out = np.empty((len(ties), 2))
     for k, tie in enumerate(ties):
         p0 = with_attitude(poses[tie.frame], tuple(base))
-        uv = camera.project(np.array([[tie.x, tie.y, 0.0]]), p0)
-        p1 = with_attitude(poses[tie.frame], tuple(attitude))
-        g = camera.ground_points(uv[:, 0], uv[:, 1], p1)[0]
-        out[k] = g[:2] - (tie.x, tie.y)
+        out[k] = moved_point(camera, p0, tie.x, tie.y, attitude) - (tie.x, tie.y)
     return out
 
 

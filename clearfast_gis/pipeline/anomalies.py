@@ -9,6 +9,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from clearfast_gis.detection import blob_features, classify, detect_anomalies
+from clearfast_gis.detection.compact import split_oversized
+from clearfast_gis.detection.detector import as_image_stack
 from clearfast_gis.detection.features import AnomalyFeatures
 from clearfast_gis.progress import NULL_PROGRESS, Progress
 from clearfast_gis.thermal import (
@@ -96,6 +98,34 @@ def split_by_cores(labels: np.ndarray, votes: np.ndarray, level: float) -> np.nd
     return split.astype(np.int32)
 
 
+MIN_SUPPORT_SCANS = 3
+"""Fewest scans whose images must vote for a pixel (with the default, coverage-relative
+voting level and combination threshold)."""
+
+
+def coverage_level(fraction: float, covered: np.ndarray, n_scans: int, n_bands: int
+                   ) -> np.ndarray:
+    """Per-pixel vote count required: ``fraction`` of the images covering the pixel.
+
+    Fully covered pixels get ``fraction`` of the N x B images (the stack's level); partly
+    covered ones a proportional level, never below what :data:`MIN_SUPPORT_SCANS` scans give
+    (nor above the stack's level).
+
+    Parameters
+    ----------
+    fraction : float
+    covered : int (H, W)
+        Images with data at each pixel.
+    n_scans, n_bands : int
+
+    Returns
+    -------
+    float (H, W)
+    """
+    floor = max(1, min(MIN_SUPPORT_SCANS * n_bands, round(fraction * n_scans * n_bands)))
+    return np.maximum(np.round(fraction * covered), floor).astype(np.float64)
+
+
 def detect_on_mosaics(stack_c: np.ndarray, times_s: np.ndarray, transform, pixel_size_m: float,
                       longitude_deg: float, d1_m: float, d2_m: float, epsilon: float,
                       level: int | None, gamma: float | None, max_anomalies: int,
@@ -117,9 +147,13 @@ def detect_on_mosaics(stack_c: np.ndarray, times_s: np.ndarray, transform, pixel
         Site longitude (local solar time for the polarity).
     d1_m, d2_m, epsilon, level, gamma : detector parameters (paper §4), sizes in metres.
     level_fraction : float
-        Voting level as a fraction of the N x B images when ``level`` is None.
+        Voting level, when ``level`` is None, as a fraction of the images that cover each
+        pixel (at least :data:`MIN_SUPPORT_SCANS` scans' worth): a drifting platform
+        (paper §6) leaves parts of the site out of some scans, and a mine seen in a third of
+        the scans is no less a mine.
     gamma_fraction : float or None
-        Combination threshold as a fraction of the images when ``gamma`` is None (None: OR).
+        Combination threshold as a fraction of the covering images when ``gamma`` is None
+        (None: OR).
     max_anomalies : int
         Keep the highest-scoring ones.
 
@@ -129,14 +163,18 @@ def detect_on_mosaics(stack_c: np.ndarray, times_s: np.ndarray, transform, pixel
         Relabelled 1..K in the order of ``features``.
     features : list of AnomalyFeatures
     """
-    n_images = stack_c.shape[0] * stack_c.shape[1]
-    if level is None:
-        level = max(1, int(round(level_fraction * n_images)))
-    if gamma is None and gamma_fraction is not None:
-        gamma = max(1.0, float(round(gamma_fraction * n_images)))
+    images, n_scans, n_bands = as_image_stack(stack_c)
+    if level is None or (gamma is None and gamma_fraction is not None):
+        covered = np.isfinite(images).sum(axis=0)
+        if level is None:
+            level = coverage_level(level_fraction, covered, n_scans, n_bands)
+        if gamma is None and gamma_fraction is not None:
+            gamma = coverage_level(gamma_fraction, covered, n_scans, n_bands)
     det = detect_anomalies(stack_c, disk_px(d1_m, pixel_size_m), disk_px(d2_m, pixel_size_m),
                            epsilon=epsilon, level=level, gamma=gamma, progress=progress)
     split = split_by_cores(det.labels, det.votes, level)
+    split = split_oversized(split, images, disk_px(d1_m, pixel_size_m),
+                            disk_px(d2_m, pixel_size_m), d1_m / pixel_size_m)
     feats = blob_features(split, stack_c, times_s=times_s, transform=transform,
                           pixel_size_m=pixel_size_m, detection=det, longitude_deg=longitude_deg)
     feats = sorted(feats, key=lambda f: (-f.score, f.id))[:max_anomalies]

@@ -2,14 +2,17 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from collections.abc import Callable
+from dataclasses import dataclass, field
 
 import numpy as np
 import shapely
 
 from clearfast_gis.geometry.grid import GroundGrid
+from clearfast_gis.geometry.pose import CameraPose
 from clearfast_gis.geometry.projection import frame_footprint
 from clearfast_gis.mosaic import FrameInput, build_scan_mosaic, project_frame
+from clearfast_gis.mosaic.adjust import LinearTie, attitude_at, displacement_jacobian
 from clearfast_gis.mosaic.attitude import GroundTie, fit_attitude, with_attitude
 from clearfast_gis.mosaic.coregister import coregister_projected
 from clearfast_gis.mosaic.markers import locate_marker
@@ -29,6 +32,9 @@ class AttitudeFit:
         Ties measured on markers and by registration, and inliers of the fit.
     rms_m : float
         Weighted RMS residual of the ties, metres (NaN without a fit).
+    ties : tuple of LinearTie
+        The ties, linearised for the survey-wide adjustment
+        (:func:`clearfast_gis.mosaic.adjust.adjust_attitudes`).
     """
 
     attitude_rpy_deg: tuple[float, float, float]
@@ -36,6 +42,7 @@ class AttitudeFit:
     n_image_ties: int
     n_used: int
     rms_m: float
+    ties: tuple[LinearTie, ...] = field(default=(), repr=False)
 
     def as_dict(self) -> dict:
         return {"attitude_rpy_deg": list(self.attitude_rpy_deg),
@@ -44,10 +51,50 @@ class AttitudeFit:
                 "rms_m": None if not np.isfinite(self.rms_m) else self.rms_m}
 
 
+@dataclass(frozen=True)
+class ReferenceMosaic:
+    """A finished scan mosaic that later scans are registered against.
+
+    Attributes
+    ----------
+    scan : int
+    values : float32 (B, H, W)
+        Degrees C.
+    source : int (H, W)
+        Scan-pattern position of the frame seen in each cell (-1: none).
+    frame_at : callable
+        ``frame_at(position) -> (time_s, CameraPose)``: the frame's time and the pose (with
+        the attitude) it was placed with.
+    """
+
+    scan: int
+    values: np.ndarray
+    source: np.ndarray
+    frame_at: Callable[[int], tuple[float, CameraPose]]
+
+    def tie_frame(self, row_slice: slice, col_slice: slice) -> int | None:
+        """The position whose frame supplies most of the window (None if empty)."""
+        src = self.source[row_slice, col_slice]
+        src = src[src >= 0]
+        if src.size == 0:
+            return None
+        vals, counts = np.unique(src, return_counts=True)
+        return int(vals[np.argmax(counts)])
+
+
 def reposed(frames: list[FrameInput], attitude_rpy_deg) -> list[FrameInput]:
-    """The frames with every pose given ``attitude_rpy_deg``."""
-    return [FrameInput(f.index, f.values, with_attitude(f.pose, attitude_rpy_deg))
-            for f in frames]
+    """The frames with every pose given ``attitude_rpy_deg`` (one attitude, or (N, 3))."""
+    att = np.asarray(attitude_rpy_deg, dtype=float)
+    if att.ndim == 1:
+        att = np.broadcast_to(att, (len(frames), 3))
+    return [FrameInput(f.index, f.values, with_attitude(f.pose, tuple(a)))
+            for f, a in zip(frames, att, strict=True)]
+
+
+def reposed_in_time(frames: list[FrameInput], times_s: np.ndarray, node_times_s: np.ndarray,
+                    nodes_rpy_deg: np.ndarray) -> list[FrameInput]:
+    """The frames posed with the survey-wide attitude model at their times (UTC epoch s)."""
+    return reposed(frames, attitude_at(times_s, node_times_s, nodes_rpy_deg))
 
 
 def _marker_tie(placed: list[FrameInput], footprints, camera, grid: GroundGrid, n_bands: int,
@@ -75,9 +122,9 @@ def _marker_tie(placed: list[FrameInput], footprints, camera, grid: GroundGrid, 
                      y - found[1], MARKER_WEIGHT)
 
 
-def scan_attitude(frames: list[FrameInput], camera, grid: GroundGrid, n_bands: int,
-                  reference: np.ndarray | None, marker_xy: np.ndarray,
-                  init_rpy_deg=(0.0, 0.0, 0.0), search_m: float = 0.6,
+def scan_attitude(frames: list[FrameInput], times_s: np.ndarray, camera, grid: GroundGrid,
+                  n_bands: int, references: list[ReferenceMosaic], marker_xy: np.ndarray,
+                  scan: int, init_rpy_deg=(0.0, 0.0, 0.0), search_m: float = 0.6,
                   n_samples: int = 40) -> AttitudeFit:
     """Fit the platform attitude of one scan.
 
@@ -85,17 +132,21 @@ def scan_attitude(frames: list[FrameInput], camera, grid: GroundGrid, n_bands: i
     ----------
     frames : list of FrameInput
         The scan's calibrated frames with their geometric poses.
+    times_s : float (N,)
+        Time of each frame, UTC epoch seconds.
     camera : camera model
     grid : GroundGrid
         The mosaic grid.
     n_bands : int
-    reference : float32 (B, H, W), list of them, or None
+    references : list of ReferenceMosaic
         Mosaics to measure the frames against (the previous scan's, and the reference
-        scan's so that errors do not accumulate along the chain); None for the first scan.
+        scan's so that errors do not accumulate along the chain); empty for the first scan.
     marker_xy : float (M, 2)
         Surveyed markers, survey CRS metres.
+    scan : int
+        The scan's number (recorded in its ties).
     init_rpy_deg : (roll, pitch, yaw)
-        Starting attitude (the previous scan's).
+        Starting attitude (the previous scan's), degrees.
     search_m : float
         Largest displacement searched per frame registration, metres.
     n_samples : int
@@ -104,11 +155,18 @@ def scan_attitude(frames: list[FrameInput], camera, grid: GroundGrid, n_bands: i
     Returns
     -------
     AttitudeFit
+        With every tie linearised for the survey-wide adjustment.
     """
     init = tuple(float(a) for a in init_rpy_deg)
     placed = reposed(frames, init)
     ties: list[GroundTie] = []
+    linear: list[LinearTie] = []
     n_marker = n_image = 0
+    base = np.array(init)
+
+    def jac_at(i: int, x: float, y: float) -> np.ndarray:
+        return displacement_jacobian(camera, placed[i].pose, x, y)
+
     if len(marker_xy):
         footprints = [frame_footprint(camera, f.pose) for f in placed]
         for x, y in marker_xy:
@@ -116,9 +174,10 @@ def scan_attitude(frames: list[FrameInput], camera, grid: GroundGrid, n_bands: i
                               search_m)
             if tie is not None:
                 ties.append(tie)
+                linear.append(LinearTie(scan, float(times_s[tie.frame]), base,
+                                        jac_at(tie.frame, tie.x, tie.y),
+                                        np.array([tie.dx, tie.dy]), tie.weight))
                 n_marker += 1
-    references = [] if reference is None else (
-        list(reference) if isinstance(reference, list | tuple) else [reference])
     if references:
         pick = np.unique(np.linspace(0, len(placed) - 1, min(n_samples, len(placed)))
                          .round().astype(int))
@@ -130,13 +189,24 @@ def scan_attitude(frames: list[FrameInput], camera, grid: GroundGrid, n_bands: i
             xc = grid.x0 + (pf.window.col0 + pf.window.width / 2) * grid.pixel_size
             yc = grid.y0 - (pf.window.row0 + pf.window.height / 2) * grid.pixel_size
             for ref in references:
-                _, corr, _ = coregister_projected(pf, ref[:, rs, cs], grid.pixel_size,
+                _, corr, _ = coregister_projected(pf, ref.values[:, rs, cs], grid.pixel_size,
                                                   max_shift_m=search_m, max_angle_deg=0.0)
-                if corr.applied:
-                    ties.append(GroundTie(int(i), xc, yc, corr.dx_m, corr.dy_m, 1.0))
-                    n_image += 1
+                if not corr.applied:
+                    continue
+                ties.append(GroundTie(int(i), xc, yc, corr.dx_m, corr.dy_m, 1.0))
+                n_image += 1
+                j = ref.tie_frame(rs, cs)
+                if j is None:
+                    continue
+                t_ref, pose_ref = ref.frame_at(j)
+                xr, yr = xc + corr.dx_m, yc + corr.dy_m
+                linear.append(LinearTie(
+                    scan, float(times_s[i]), base, jac_at(int(i), xc, yc),
+                    np.array([corr.dx_m, corr.dy_m]), 1.0, ref.scan, float(t_ref),
+                    np.asarray(pose_ref.attitude_rpy_deg, dtype=float),
+                    displacement_jacobian(camera, pose_ref, xr, yr)))
     if len(ties) < 2:
-        return AttitudeFit(init, n_marker, n_image, 0, float("nan"))
+        return AttitudeFit(init, n_marker, n_image, 0, float("nan"), tuple(linear))
     poses = [f.pose for f in frames]
     att, rms, used = fit_attitude(camera, poses, ties, base_rpy_deg=init)
-    return AttitudeFit(att, n_marker, n_image, used, rms)
+    return AttitudeFit(att, n_marker, n_image, used, rms, tuple(linear))

@@ -7,8 +7,8 @@ import json
 from dataclasses import asdict, dataclass, fields
 
 MOSAIC_PARAMETERS = ("pixel_size_m", "coregister", "search_m", "attitude_samples",
-                     "frame_refine", "max_shift_m", "max_angle_deg", "seam_balance",
-                     "reference_scan", "atmosphere")
+                     "adjust_attitude", "frame_refine", "max_shift_m", "max_angle_deg",
+                     "seam_balance", "reference_scan", "atmosphere")
 """The parameters that change the mosaics (the others only change the anomalies)."""
 
 
@@ -30,6 +30,11 @@ class ProcessOptions:
         Largest displacement searched when measuring a frame against the reference, metres.
     attitude_samples : int
         Frames per scan measured against each reference for the attitude fit.
+    adjust_attitude : bool
+        After every scan has its own attitude, adjust the attitudes of all scans at once
+        (:mod:`clearfast_gis.mosaic.adjust`): a smooth attitude over time, pinned by the
+        markers of every scan and tied scan to scan by the registrations; the scans whose
+        placement changes are projected again.
     frame_refine : bool
         After the attitude fit, also shift each frame individually by mutual information
         against the mosaic so far / the reference (bounded by ``max_shift_m``).
@@ -74,6 +79,7 @@ class ProcessOptions:
     coregister: bool = True
     search_m: float = 0.6
     attitude_samples: int = 40
+    adjust_attitude: bool = True
     frame_refine: bool = False
     max_shift_m: float = 0.1
     max_angle_deg: float = 0.0

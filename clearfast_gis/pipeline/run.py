@@ -21,7 +21,13 @@ from clearfast_gis.export.manifest import (
 from clearfast_gis.geometry.gnss import platform_track, smooth_static_track, utm_epsg_for
 from clearfast_gis.geometry.projection import frame_footprint
 from clearfast_gis.mosaic import build_scan_mosaic, mosaic_grid, temporal_residual
+from clearfast_gis.mosaic.attitude import with_attitude
 from clearfast_gis.mosaic.build import FrameCorrection
+from clearfast_gis.pipeline.adjustment import (
+    adjust_survey_attitude,
+    placement_attitude,
+    stored_model,
+)
 from clearfast_gis.pipeline.anomalies import (
     AnomalySet,
     characterise,
@@ -31,7 +37,12 @@ from clearfast_gis.pipeline.anomalies import (
     split_markers,
     suspect_records,
 )
-from clearfast_gis.pipeline.attitude import reposed, scan_attitude
+from clearfast_gis.pipeline.attitude import (
+    ReferenceMosaic,
+    reposed,
+    reposed_in_time,
+    scan_attitude,
+)
 from clearfast_gis.pipeline.frames import (
     SurveyContext,
     first_scan_band_frames,
@@ -244,26 +255,56 @@ class _ScanJob:
         self.options, self.products, self.state, self.progress = (options, products, state,
                                                                   progress)
 
-    def build(self, scan: int, references: list[np.ndarray] | None, init_attitude: tuple,
-              refit_from: int | None = None) -> dict:
+    def frame_times(self, scan: int, frames) -> np.ndarray:
+        """Time (UTC epoch s) of each frame of ``frames`` (band 0 of its position)."""
+        fr = self.ctx.survey.frames
+        rows = self.ctx.survey.scan_rows(scan, 0)
+        by_pos = dict(zip(fr.position[rows].tolist(), fr.time_s[rows].tolist(), strict=True))
+        return np.array([by_pos[f.index] for f in frames], dtype=float)
+
+    def reference(self, scan: int, rec: dict, model) -> ReferenceMosaic:
+        """A finished scan's mosaic, source map and placement, to register against."""
+        survey, ctx = self.ctx.survey, self.ctx
+        fr = survey.frames
+        rows = survey.scan_rows(scan, 0)
+        by_pos = {int(p): int(r) for p, r in zip(fr.position[rows], rows, strict=True)}
+
+        def frame_at(position: int):
+            r = by_pos[position]
+            t = float(fr.time_s[r])
+            return t, with_attitude(frame_pose(ctx, t, fr.pan_deg[r], fr.tilt_deg[r]),
+                                    tuple(placement_attitude(rec, model, np.array([t]))[0]))
+
+        return ReferenceMosaic(scan, read_mosaic(self.products / mosaic_rel(scan)).bands_c,
+                               np.load(_source_path(self.products, scan)), frame_at)
+
+    def build(self, scan: int, references: list[ReferenceMosaic], init_attitude: tuple,
+              refit_from: int | None = None, model=None, fitted: dict | None = None) -> dict:
         """Mosaic ``scan``, its attitude fitted against ``references`` (the neighbouring
         scan's mosaic, and the reference scan's so that errors do not accumulate) and the
-        markers; write the COG and record the unit."""
+        markers, or placed with the survey-wide attitude ``model`` (node times, nodes) of the
+        adjustment (then ``fitted`` is the scan's earlier record, whose fit is kept); write
+        the COG and record the unit."""
         ctx, options, survey = self.ctx, self.options, self.ctx.survey
         t_scan = time.perf_counter()
         frames = list(scan_frames(ctx, scan, self.air_at, atmosphere=options.atmosphere))
+        times = self.frame_times(scan, frames)
         fit = None
         attitude = init_attitude
-        if options.coregister:
-            fit = scan_attitude(frames, ctx.camera, self.grid, len(survey.bands), references,
-                                self.marker_xy, attitude, search_m=options.search_m,
-                                n_samples=options.attitude_samples)
-            attitude = fit.attitude_rpy_deg
-        progress = self.progress if refit_from is None else NULL_PROGRESS
-        m = build_scan_mosaic(reposed(frames, attitude), ctx.camera, self.grid,
-                              len(survey.bands),
+        if model is not None:
+            placed = reposed_in_time(frames, times, *model)
+        else:
+            if options.coregister:
+                fit = scan_attitude(frames, times, ctx.camera, self.grid, len(survey.bands),
+                                    references, self.marker_xy, scan, attitude,
+                                    search_m=options.search_m,
+                                    n_samples=options.attitude_samples)
+                attitude = fit.attitude_rpy_deg
+            placed = reposed(frames, attitude)
+        progress = self.progress if refit_from is None and model is None else NULL_PROGRESS
+        m = build_scan_mosaic(placed, ctx.camera, self.grid, len(survey.bands),
                               coregister=options.coregister and options.frame_refine,
-                              reference=references[0] if references else None,
+                              reference=references[0].values if references else None,
                               max_shift_m=options.max_shift_m,
                               max_angle_deg=options.max_angle_deg,
                               seam_balance=options.seam_balance, progress=progress)
@@ -279,9 +320,13 @@ class _ScanJob:
             np.save(fh, m.source)
         rec = {"scan": scan, "time_s": t_mean, "start_s": t_start,
                "attitude": None if fit is None else fit.as_dict(),
+               "ties": [] if fit is None else [t.as_list() for t in fit.ties],
                "corrections": {str(k): _correction_dict(v) for k, v in m.corrections.items()},
                "seconds": time.perf_counter() - t_scan, "refit_from": refit_from,
                "seam_gains": {str(k): list(v) for k, v in m.seam_gains.items()}}
+        if model is not None and fitted is not None:
+            rec.update({k: fitted.get(k) for k in ("attitude", "ties", "refit_from")})
+            rec["adjusted"] = True
         self.state.finish(f"scan_{scan:03d}", rec, [rel])
         return rec
 
@@ -348,20 +393,21 @@ def process_survey(survey_path: str | Path, products: str | Path,
     scan_records: dict[int, dict] = {}
     job = _ScanJob(ctx, grid, epsg, descriptions, air_at, marker_xy, options, products, state,
                    progress)
-    previous_values = reference_values = None
+    previous = reference = None
+    model = stored_model(state)
     for scan in order:
         rec = state.done(f"scan_{scan:03d}")
         if rec is not None:
             progress.advance(n_pos, scan=scan, resumed=True)
         else:
-            refs = [v for v in (previous_values, reference_values) if v is not None]
-            rec = job.build(scan, refs or None, _neighbour(scan, attitudes))
+            refs = [r for r in (previous, reference) if r is not None]
+            rec = job.build(scan, refs, _neighbour(scan, attitudes))
         if rec.get("attitude"):
             attitudes[scan] = tuple(rec["attitude"]["attitude_rpy_deg"])
         scan_records[scan] = dict(rec)
-        previous_values = read_mosaic(products / mosaic_rel(scan)).bands_c
+        previous = job.reference(scan, rec, model)
         if scan == ref:
-            reference_values = previous_values
+            reference = previous
     # the scans before the first one anchored by markers inherit its placement backwards
     anchored = [s for s in order if (scan_records[s].get("attitude") or {})
                 .get("n_marker_ties", 0) >= 2]
@@ -370,13 +416,17 @@ def process_survey(survey_path: str | Path, products: str | Path,
             scan, nxt = order[k], order[k + 1]
             if scan_records[scan].get("refit_from") == nxt:
                 continue
-            refs = [read_mosaic(products / mosaic_rel(nxt)).bands_c]
-            if reference_values is not None and nxt != ref:
-                refs.append(reference_values)
+            refs = [job.reference(nxt, scan_records[nxt], None)]
+            if reference is not None and nxt != ref:
+                refs.append(reference)
             rec = job.build(scan, refs, attitudes[scan], refit_from=nxt)
             attitudes[scan] = tuple(rec["attitude"]["attitude_rpy_deg"])
             scan_records[scan] = dict(rec)
     progress.close()
+    adjustment = None
+    if options.coregister and options.adjust_attitude:
+        adjustment = adjust_survey_attitude(job, state, order, scan_records, attitudes,
+                                            progress)
     _temporal_residuals(products, scan_records, ref, options.coregister)
     timings["mosaics"] = time.perf_counter() - t0
 
@@ -395,6 +445,7 @@ def process_survey(survey_path: str | Path, products: str | Path,
             state.drop("anomalies")
         manifest = _anomaly_stage(ctx, survey, products, options, state, scan_records, epsg,
                                   grid, report, timings, progress)
+    manifest["attitude_adjustment"] = adjustment
     timings["total"] = time.perf_counter() - t_all
     manifest["timings_s"] = {k: round(v, 3) for k, v in timings.items()}
     write_products_manifest(products, manifest)
