@@ -468,6 +468,14 @@ def _load_stack(products: Path, scans: list[int]) -> tuple[np.ndarray, object]:
     return np.stack([m.bands_c for m in mos]).astype(np.float32), mos[0]
 
 
+def _mosaics_digest(state: RunState, scans: list[int]) -> str:
+    """Checksum of the scan mosaics the anomalies come from (their run-state checksums)."""
+    import hashlib
+
+    files = [state.units.get(f"scan_{s:03d}", {}).get("files", {}) for s in scans]
+    return hashlib.sha256(json.dumps(files, sort_keys=True).encode()).hexdigest()[:20]
+
+
 def _anomaly_stage(ctx, survey, products: Path, options: ProcessOptions, state: RunState,
                    scan_records: dict[int, dict], epsg: int, grid, report, timings: dict,
                    progress: Progress) -> dict:
@@ -475,8 +483,9 @@ def _anomaly_stage(ctx, survey, products: Path, options: ProcessOptions, state: 
     from clearfast_gis.thermal import forcing_from_weather
 
     done = state.done("anomalies")
+    mosaics = _mosaics_digest(state, sorted(scan_records))
     if done is not None and done.get("key") == options.detection_key() \
-            and (products / "products.json").exists():
+            and done.get("mosaics") == mosaics and (products / "products.json").exists():
         kept = read_products_manifest(products)
         if kept.get("parameters") == options.as_dict():
             progress.message("anomalies: up to date, kept")
@@ -518,7 +527,8 @@ def _anomaly_stage(ctx, survey, products: Path, options: ProcessOptions, state: 
                                       first.transform, epsg, scan_records, report, options,
                                       fixq, timings)
     timings["products"] = time.perf_counter() - t0
-    state.finish("anomalies", {"n": len(records), "key": options.detection_key()},
+    state.finish("anomalies", {"n": len(records), "key": options.detection_key(),
+                               "mosaics": mosaics},
                  ["anomalies.gpkg", "report.html"])
     return manifest
 
