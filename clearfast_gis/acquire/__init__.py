@@ -26,6 +26,7 @@ from clearfast_gis.acquire.ports import (
 from clearfast_gis.acquire.ptu import (
     PanTiltUnit,
     PtuError,
+    PtuLimitError,
     PtuProtocolError,
     PtuReply,
     PtuTimeout,
@@ -50,7 +51,8 @@ from clearfast_gis.acquire.weather import WeatherStationLogger, toa5_header, toa
 __all__ = [
     "DEFAULT_BAUD", "DEFAULT_DEPTHS_M", "AppendLog", "GnssFix", "GnssLogger", "LineLogger",
     "LineSplitter", "ManualClock", "MissionResult", "MissionRunner", "PanTiltUnit", "PortError",
-    "PortSpec", "PtuError", "PtuProtocolError", "PtuReply", "PtuTimeout", "SimulatedPtu",
+    "PortSpec", "PtuError", "PtuLimitError", "PtuProtocolError", "PtuReply", "PtuTimeout",
+    "SimulatedPtu",
     "ThermocoupleLogger", "WeatherStationLogger", "classify_sentence", "deg_to_steps",
     "format_reply", "open_port", "parse_port_spec", "parse_reply", "parse_thermocouple_line",
     "pty_pair", "scan_tiff_name", "simulated_ptu_device", "steps_to_deg", "toa5_header",

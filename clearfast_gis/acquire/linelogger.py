@@ -22,7 +22,7 @@ from collections.abc import Callable
 import serial
 
 from clearfast_gis.acquire.appendlog import AppendLog, LineSplitter
-from clearfast_gis.acquire.ports import READ_TIMEOUT_S, PortError, _reason
+from clearfast_gis.acquire.ports import READ_TIMEOUT_S, SERIAL_ERRORS, PortError, _reason
 from clearfast_gis.errors import ClearfastError
 
 #: ``on_event(instrument, event, detail)``: a logger's report of something worth a log line
@@ -118,7 +118,7 @@ class LineLogger:
         try:
             waiting = self.port.in_waiting
             data = self.port.read(max(1, waiting))
-        except (serial.SerialException, OSError) as exc:
+        except SERIAL_ERRORS as exc:
             raise PortError(f"read failed ({_reason(exc)})", self.port_name) from None
         return self.feed(data) if data else 0
 

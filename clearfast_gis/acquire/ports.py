@@ -14,6 +14,15 @@ import serial
 
 from clearfast_gis.errors import ClearfastError
 
+try:  # termios (POSIX) raises its own error, not an OSError, on a vanished terminal
+    import termios
+    _TERMIOS_ERRORS: tuple[type[BaseException], ...] = (termios.error,)
+except ImportError:  # pragma: no cover - Windows
+    _TERMIOS_ERRORS = ()
+
+#: exceptions of reading, writing or flushing a serial port that has gone away
+SERIAL_ERRORS = (serial.SerialException, OSError, *_TERMIOS_ERRORS)
+
 #: default baud rates per instrument (typical factory settings)
 DEFAULT_BAUD = {"gnss": 115200, "weather": 9600, "soil": 9600, "ptu": 9600}
 
@@ -86,6 +95,8 @@ def open_port(spec: PortSpec, timeout_s: float = READ_TIMEOUT_S) -> serial.Seria
 
 def _reason(exc: BaseException) -> str:
     """The OS reason of a pyserial error without the repeated port name."""
+    if _TERMIOS_ERRORS and isinstance(exc, _TERMIOS_ERRORS) and len(exc.args) == 2:
+        return str(exc.args[1])
     text = " ".join(str(exc).split())
     found = re.findall(r"\[Errno -?\d+\] ([^:\]]+)", text)
     if found:

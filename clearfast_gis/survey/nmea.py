@@ -320,7 +320,9 @@ def parse_nmea(text: str, label: str = "gnss.nmea", fallback_date_s: float | Non
     bad_cs: list[int] = []
     junk: list[int] = []
     n_lines = 0
-    for lineno, raw in enumerate(text.splitlines(), start=1):
+    # lines end at LF (CR LF on the wire), as the logger splits them: control characters of
+    # line noise (CR, FF, VT, ...) stay inside their line
+    for lineno, raw in enumerate(text.split("\n"), start=1):
         line = raw.strip()
         if not line:
             continue
@@ -387,9 +389,10 @@ def parse_nmea(text: str, label: str = "gnss.nmea", fallback_date_s: float | Non
 
 def read_nmea(path: str | os.PathLike, fallback_date_s: float | None = None,
               label: str | None = None) -> GnssLog:
-    """Read an NMEA 0183 log file (see :func:`parse_nmea`)."""
+    """Read an NMEA 0183 log file (see :func:`parse_nmea`); bytes that are not text (line
+    noise recorded by the logger) make their line unparseable, not the file unreadable."""
     label = str(path) if label is None else label
-    return parse_nmea(read_text(path, label), label, fallback_date_s)
+    return parse_nmea(read_text(path, label, errors="replace"), label, fallback_date_s)
 
 
 def gnss_sentences(log: GnssLog, talker: str = "GP") -> list[str]:

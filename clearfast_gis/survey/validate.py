@@ -127,14 +127,15 @@ class _Checker:
             self.problem(exc.path or file, exc.field or "", exc.message)
 
     def text(self, rel: str, key: str) -> str | None:
-        """Text of ``files.<key>`` or None after recording the problem."""
+        """Text of ``files.<key>`` or None after recording the problem (the raw GNSS log
+        may hold line noise that is not text; see :func:`read_text`)."""
         try:
             path = resolve_inside(self.root, rel, MANIFEST_NAME, f"files.{key}")
         except InvalidInput as exc:
             self.problem(MANIFEST_NAME, exc.field or f"files.{key}", exc.message)
             return None
         try:
-            return read_text(path, rel)
+            return read_text(path, rel, errors="replace" if key == "gnss" else "strict")
         except InvalidInput as exc:
             self.problem(rel, exc.field or "", exc.message)
             return None
