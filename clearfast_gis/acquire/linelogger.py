@@ -165,9 +165,13 @@ class LineLogger:
             self.error = exc.one_line()
         finally:
             try:
-                self.log.close()
+                self.close_logs()
             except ClearfastError as exc:
                 self.error = self.error or exc.one_line()
+
+    def close_logs(self) -> None:
+        """fsync and close the output log(s)."""
+        self.log.close()
 
     def start(self, stop: threading.Event) -> threading.Thread:
         """Run :meth:`run` in a daemon thread and return it."""

@@ -160,7 +160,7 @@ def command(gnss_spec, weather_spec, soil_spec, ptu_spec, soil_depths: tuple[flo
     except BaseException:
         for p in parts:
             if hasattr(p, "log"):
-                p.log.close()
+                p.close_logs()
         for port in ports.values():
             port.close()
         raise
