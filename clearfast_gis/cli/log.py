@@ -55,11 +55,11 @@ def _port_opt(name: str, kind: str, what: str):
 
 
 def _file_names(survey_dir: Path) -> dict[str, str]:
-    names = {"gnss": "gnss.nmea", "weather": "weather.dat", "soil": "soil.csv"}
+    from clearfast_gis.survey.manifest import DEFAULT_FILES, read_survey_json
+
+    names = {k: DEFAULT_FILES[k] for k in ("gnss", "weather", "soil")}
     manifest = survey_dir / "survey.json"
     if manifest.exists():
-        from clearfast_gis.survey.manifest import read_survey_json
-
         files = read_survey_json(manifest, "survey.json")["files"]
         names.update({k: files[k] for k in names if k in files})
     return names
