@@ -211,10 +211,9 @@ class DropFolderCamera:
             raise CameraError("drop folder not found", self.folder)
         self.session = secrets.token_hex(8)
         self.sequence = 0
-        for stale in self.folder.iterdir():
-            if _FRAME.match(stale.name) or stale.name == REQUEST_NAME:
-                with contextlib.suppress(OSError):
-                    stale.unlink()
+        self._remove_frames()
+        with contextlib.suppress(OSError):
+            (self.folder / REQUEST_NAME).unlink()
 
     def capture(self) -> Exposure:
         """Request a frame and wait for it.
@@ -239,8 +238,16 @@ class DropFolderCamera:
         try:
             return read_drop_frame(path)
         finally:
-            with contextlib.suppress(OSError):
-                path.unlink()
+            self._remove_frames(up_to=self.sequence)
+
+    def _remove_frames(self, up_to: int | None = None) -> None:
+        """Delete the frames of requests up to ``up_to`` (all without it): answered, or
+        answered too late."""
+        for f in self.folder.iterdir():
+            m = _FRAME.match(f.name)
+            if m and (up_to is None or int(m.group(1)) <= up_to):
+                with contextlib.suppress(OSError):
+                    f.unlink()
 
     def close(self) -> None:
         """Remove the last request."""

@@ -215,6 +215,7 @@ class FrameStore:
                 f.unlink()
         with contextlib.suppress(OSError):
             self._scan_dir(scan).rmdir()
+            (self.root / INCOMING).rmdir()
 
     def _sort_key(self, key: tuple[str, int, int]) -> tuple[int, int]:
         kind, index, repeat = key

@@ -198,7 +198,7 @@ class GnssLogger(LineLogger):
             self.n_fix_changes += 1
             before = "" if old is None else f"{old.fix_name} -> "
             self.event("fix", f"{before}{self.fix.fix_name} at "
-                       f"{format_utc(self.fix.time_s, 'seconds')}")
+                       f"{format_utc(self.fix.time_s, 'seconds')[11:19]} UTC")
 
     def status(self) -> dict:
         out = super().status()

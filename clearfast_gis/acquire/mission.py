@@ -51,6 +51,9 @@ from clearfast_gis.errors import InvalidInput
 from clearfast_gis.progress import NULL_PROGRESS, Progress
 from clearfast_gis.survey.manifest import manifest_problems, write_mission, write_survey_json
 
+#: a scan starting later than this fraction of the scan interval is reported as late
+LATE_FRACTION = 0.02
+
 __all__ = ["Blackbodies", "MissionResult", "MissionRunner", "PointingUnit", "event_tiff_name",
            "scan_tiff_name"]
 
@@ -98,7 +101,8 @@ class MissionResult:
     n_calibration_frames : int
         Blackbody exposures taken.
     late_scans : list of int
-        Scans that started after their planned time (the previous scan overran).
+        Scans that started after their planned time by more than 2 % of the scan interval
+        (at least 1 s): the previous scan overran, or the run was resumed late.
     missed_scans : list of int
         Scans skipped because their window had passed (``resume``).
     n_retries : int
@@ -275,7 +279,7 @@ class MissionRunner:
                                 f"{now - planned - interval:.0f} s ago")
                     self.progress.advance(len(keys), scan=scan, missed=True)
                     continue
-                if now > planned + 1.0:
+                if now > planned + max(1.0, LATE_FRACTION * interval):
                     result.late_scans.append(scan)
                     self.progress.message(f"scan {scan} starts {now - planned:.0f} s late")
                     self._event("late", f"scan {scan} starts {now - planned:.0f} s late")

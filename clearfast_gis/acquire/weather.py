@@ -44,7 +44,7 @@ import serial
 from clearfast_gis.acquire.appendlog import AppendLog
 from clearfast_gis.acquire.linelogger import EventSink, LineLogger
 from clearfast_gis.acquire.ports import SERIAL_ERRORS, PortError, _reason
-from clearfast_gis.errors import InvalidInput
+from clearfast_gis.errors import ClearfastError, InvalidInput
 from clearfast_gis.survey.toa5 import COLUMNS, WeatherLog, toa5_text
 from clearfast_gis.timeutil import format_utc, parse_utc
 
@@ -104,7 +104,8 @@ class WeatherStationLogger(LineLogger):
     station : str
         Station name written in the TOA5 environment line of a new file.
     clock : callable
-        UTC clock, epoch seconds: the survey clock (times the polls).
+        UTC clock, epoch seconds: the survey clock (times the polls; no poll goes out while it
+        raises :class:`~clearfast_gis.errors.ClearfastError`, i.e. before it has a time).
     fsync_interval_s : float
         Seconds between fsyncs.
     poll_interval_s : float, optional
@@ -173,7 +174,13 @@ class WeatherStationLogger(LineLogger):
             self._asked_at = None
             self.event("no reply", f"GET {self._next_record}: no END within "
                        f"{self.reply_timeout_s:g} s")
-        now = self._clock()
+        try:
+            now = self._clock()
+        except ClearfastError:  # the survey clock has no time yet
+            return
+        interval = float(self.poll_interval_s)
+        if now < self._next_poll_s - 2.0 * interval:  # the clock was set back
+            self._next_poll_s = now
         if now < self._next_poll_s:
             return
         try:
@@ -182,7 +189,7 @@ class WeatherStationLogger(LineLogger):
             raise PortError(f"write failed ({_reason(exc)})", self.port_name) from None
         self.n_polls += 1
         self._asked_at = self._mono()
-        self._next_poll_s = now + float(self.poll_interval_s)
+        self._next_poll_s = now + interval
 
     def on_reconnect(self) -> None:
         self._asked_at = None

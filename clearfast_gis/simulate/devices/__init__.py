@@ -18,11 +18,14 @@ tests run the real drivers through real terminals:
 All run on a :class:`TwinClock`: scene UTC advancing ``time_scale`` times faster than real time.
 """
 
+from clearfast_gis.simulate.devices.camera import TwinCamera
 from clearfast_gis.simulate.devices.clock import TwinClock
 from clearfast_gis.simulate.devices.gnss import SimulatedGnss
+from clearfast_gis.simulate.devices.rig import DeviceRig, Fault, parse_fault
 from clearfast_gis.simulate.devices.scheduled import ScheduledLines
 from clearfast_gis.simulate.devices.templogger import SimulatedTemperatureLogger
 from clearfast_gis.simulate.devices.weather import SimulatedWeatherStation
 
-__all__ = ["ScheduledLines", "SimulatedGnss", "SimulatedTemperatureLogger",
-           "SimulatedWeatherStation", "TwinClock"]
+__all__ = ["DeviceRig", "Fault", "ScheduledLines", "SimulatedGnss",
+           "SimulatedTemperatureLogger", "SimulatedWeatherStation", "TwinCamera", "TwinClock",
+           "parse_fault"]

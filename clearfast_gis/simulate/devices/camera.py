@@ -15,7 +15,9 @@ smoothly during a scan (a grid is built once per step, about 0.2 s for the demo)
 
 from __future__ import annotations
 
+import contextlib
 from collections.abc import Callable
+from contextlib import AbstractContextManager
 
 import numpy as np
 
@@ -43,6 +45,9 @@ class TwinCamera:
         How close to a blackbody's position the frame is filled by it, degrees.
     grid_step_s : float
         Time step of the thermal truth and of the radiance grids, seconds.
+    hold : callable, optional
+        ``hold()`` -> a context manager during which the twin clock stands still (an exposure
+        takes no scene time however long its rendering takes); default: none.
 
     Attributes
     ----------
@@ -52,13 +57,15 @@ class TwinCamera:
 
     def __init__(self, twin: Twin, pointing: Callable[[], tuple[float, float]],
                  clock: Callable[[], float], blackbodies: Blackbodies,
-                 tolerance_deg: float = 2.0, grid_step_s: float = 600.0) -> None:
+                 tolerance_deg: float = 2.0, grid_step_s: float = 600.0,
+                 hold: Callable[[], AbstractContextManager] = contextlib.nullcontext) -> None:
         self.twin = twin
         self.pointing = pointing
         self.clock = clock
         self.blackbodies = blackbodies
         self.tolerance_deg = float(tolerance_deg)
         self.grid_step_s = float(grid_step_s)
+        self.hold = hold
         times = twin.start_s + grid_step_s * np.arange(
             int(np.ceil((twin.end_s - twin.start_s) / grid_step_s)) + 1)
         self.truth = thermal_truth(twin.forcing, times, twin.objects)
@@ -99,7 +106,11 @@ class TwinCamera:
         return None
 
     def capture(self) -> Exposure:
-        """Render one exposure of every band."""
+        """Render one exposure of every band (the twin clock held still meanwhile)."""
+        with self.hold():
+            return self._render()
+
+    def _render(self) -> Exposure:
         t0 = self.clock()
         pan, tilt = self.pointing()
         c = self.twin.config
