@@ -147,6 +147,21 @@ class FrameStore:
             "time_utc": [format_utc(t) for t in cap.time_s]}})
         return path
 
+    def recover(self) -> list[int]:
+        """After a crash: delete half-written staging files (the exposure that was in flight)
+        and consolidate what earlier runs staged; returns the scans consolidated."""
+        base = self.root / INCOMING
+        if base.is_dir():
+            for d in base.iterdir():
+                for f in d.iterdir() if d.is_dir() else ():
+                    if f.name.startswith(".") and f.name.endswith(".part"):
+                        with contextlib.suppress(OSError):
+                            f.unlink()
+        scans = self.staged_scans()
+        for s in scans:
+            self.consolidate(s)
+        return scans
+
     def staged_scans(self) -> list[int]:
         """Scans with staged exposures (left by a run that did not consolidate them)."""
         base = self.root / INCOMING

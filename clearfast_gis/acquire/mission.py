@@ -12,8 +12,10 @@ survey format when they end: ``frames/scan_000_b0.tif`` (page = position order),
 scans kept).
 
 ``run(resume=True)`` continues an interrupted mission: exposures already kept are not taken
-again, a scan whose window has passed (the next scan's planned start) is recorded as missed
-rather than taken out of its time, and a scan interrupted within its window is completed.
+again (but an interrupted calibration event is taken again whole: both blackbodies belong to
+one moment), a scan whose window has passed (the next scan's planned start) is recorded as
+missed rather than taken out of its time, and a scan interrupted within its window is
+completed.
 
 The camera is a :class:`~clearfast_gis.acquire.camera.Camera` (``capture() -> Exposure``) or a
 plain callable returning one frame, (H, W) uint16 for a one-band camera or (B, H, W) for B
@@ -230,6 +232,16 @@ class MissionRunner:
             keys = [(BLACKBODY, bb, r) for bb in (1, 2) for r in range(self.blackbodies.frames)]
         return keys + [(POSITION, int(p["index"]), 0) for p in self.positions]
 
+    def _todo(self, scan: int, resume: bool) -> list[tuple[str, int, int]]:
+        """The exposures of a scan still to take. A calibration event is taken whole: an
+        interrupted one is taken again (both blackbodies belong to one moment)."""
+        keys = self.scan_keys(scan)
+        if not resume:
+            return keys
+        taken = self.store.taken(scan)
+        redo_event = any(k[0] == BLACKBODY and k not in taken for k in keys)
+        return [k for k in keys if k not in taken or (redo_event and k[0] == BLACKBODY)]
+
     def run(self, scans: Iterable[int] | None = None, start_s: float | None = None,
             resume: bool = False) -> MissionResult:
         """Run the mission's scans (default all) and write their frames.
@@ -256,11 +268,9 @@ class MissionRunner:
         write_mission(self.root / self.mission_rel, self.mission)
         if self.manifest is not None:
             write_survey_json(self.root / "survey.json", self.manifest)
-        for s in self.store.staged_scans():  # left by a run that crashed
-            self.store.consolidate(s)
+        self.store.recover()  # what a run that crashed left
         start = self.clock() if start_s is None else float(start_s)
-        plan = {s: [k for k in self.scan_keys(s)
-                    if not resume or k not in self.store.taken(s)] for s in todo}
+        plan = {s: self._todo(s, resume) for s in todo}
         result = MissionResult()
         self.progress.start("acquire", sum(len(v) for v in plan.values()))
         try:

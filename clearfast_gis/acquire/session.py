@@ -8,8 +8,8 @@
 2. start the loggers (GNSS receiver, polled weather station, thermocouple logger with the
    blackbody sensors), each in its own thread, reconnecting a lost port;
 3. take the survey clock from the receiver's UTC (:class:`~.clock.GnssClock`);
-4. set up the pan/tilt unit (resolution and limits from the unit) and check every mission and
-   blackbody position against its limits;
+4. (before anything is written, with step 1) set up the pan/tilt unit (resolution and limits
+   from the unit) and check every mission and blackbody position against its limits;
 5. write ``mission.json``, ``survey.json``, ``markers.csv`` and ``acquisition/session.json``;
    wait (at most ``warmup_s``) until every instrument has reported once;
 6. run the mission stop-and-go with the calibration event each scan (:class:`~.mission.
@@ -220,25 +220,37 @@ def run_acquisition(cfg: AcquisitionConfig, progress: Progress = NULL_PROGRESS,
         raise InvalidInput("a time scale other than 1 needs the GNSS receiver's clock (--gnss)",
                            field="time_scale", exit_code=2)
 
-    # -- open everything before writing anything ------------------------------------------
+    # -- open and check everything before writing anything -------------------------------
     inst = _Instruments()
     opened: dict = {}
+    camera = None
+    deferred: list[tuple[str, str, str]] = []  # events before the log exists
     try:
         for kind, spec in cfg.ports.items():
             opened[kind] = open_port(spec)
             inst.ports.append(opened[kind])
         clock = GnssClock(cfg.time_scale) if "gnss" in cfg.ports else HostClock()
         camera = open_camera(cfg.camera, clock=lambda: _safe_now(clock))
+        ptu = PanTiltUnit(opened["ptu"], reopen=_reopener(cfg.ports["ptu"]),
+                          reconnect_s=cfg.reconnect_s, retry_s=_retry_s(cfg),
+                          on_event=lambda *e: deferred.append(e))
+        ptu.initialize()
+        _preflight(ptu, mission, setup, mission_label)
     except BaseException:
         inst.close()
+        if camera is not None:
+            camera.close()
         raise
 
     root.mkdir(parents=True, exist_ok=True)
     events = EventLog(root / EVENTS_REL, clock.now,
                       echo=lambda s, e, d: progress.message(f"{s}: {e} {d}".rstrip()))
+    ptu.on_event = events
+    for e in deferred:
+        events(*e)
     try:
         return _run(cfg, mission, mission_label, setup, previous, inst, opened, clock, camera,
-                    events, progress, stop)
+                    ptu, events, progress, stop)
     finally:
         inst.close()
         with contextlib.suppress(Exception):
@@ -257,25 +269,32 @@ def _reopener(spec: PortSpec):
     return lambda: open_port(spec)
 
 
+def _retry_s(cfg: AcquisitionConfig) -> float:
+    """Wall seconds between attempts to reopen a lost port: 1 s in real time, less when the
+    survey clock runs faster (a device simulator), so that little survey time is lost."""
+    return min(1.0, max(0.005, 2.0 / cfg.time_scale))
+
+
 def _run(cfg: AcquisitionConfig, mission: dict, mission_label: str, setup: StationSetup,
          previous: dict | None, inst: _Instruments, opened: dict, clock, camera,
-         events: EventLog, progress: Progress, stop: threading.Event) -> AcquisitionSummary:
+         ptu: PanTiltUnit, events: EventLog, progress: Progress, stop: threading.Event
+         ) -> AcquisitionSummary:
     root = Path(cfg.survey_dir)
     files = dict(DEFAULT_FILES)
     if "gnss" in opened:
         inst.loggers.append(GnssLogger(opened["gnss"], root / files["gnss"],
                                        on_time=clock.observe, reopen=_reopener(cfg.ports["gnss"]),
-                                       on_event=events))
+                                       retry_s=_retry_s(cfg), on_event=events))
     if "weather" in opened:
         inst.loggers.append(WeatherStationLogger(
             opened["weather"], root / files["weather"], clock=clock.now,
             poll_interval_s=cfg.weather_poll_s, reopen=_reopener(cfg.ports["weather"]),
-            on_event=events))
+            retry_s=_retry_s(cfg), on_event=events))
     if "soil" in opened:
         inst.loggers.append(ThermocoupleLogger(
             opened["soil"], root / files["soil"], setup.soil_depths_m,
             blackbody_path=root / files["blackbody_log"], reopen=_reopener(cfg.ports["soil"]),
-            on_event=events))
+            retry_s=_retry_s(cfg), on_event=events))
     for kind in ("gnss", "weather", "soil"):
         if kind not in opened:
             progress.message(f"no {kind} port: the survey will lack {files[kind]}")
@@ -286,15 +305,11 @@ def _run(cfg: AcquisitionConfig, mission: dict, mission_label: str, setup: Stati
     if isinstance(clock, GnssClock) and not clock.wait_ready(cfg.gnss_wait_s):
         raise ClearfastError(f"no UTC time (RMC or ZDA sentence) from the GNSS receiver within "
                              f"{cfg.gnss_wait_s:g} s", cfg.ports["gnss"].port)
-    ptu = PanTiltUnit(opened["ptu"], reopen=_reopener(cfg.ports["ptu"]),
-                      reconnect_s=cfg.reconnect_s, on_event=events)
-    ptu.initialize()
     lim = ptu.limits_deg()
     events("ptu", "opened", f"resolution {ptu.pan_resolution_deg * 3600:g}/"
            f"{ptu.tilt_resolution_deg * 3600:g} arcsec per step" + (
                "" if lim is None else f", pan {lim[0]:.2f} to {lim[1]:.2f} deg, "
                f"tilt {lim[2]:.2f} to {lim[3]:.2f} deg"))
-    _preflight(ptu, mission, setup, mission_label)
 
     _warm_up(cfg, inst, clock, stop, progress)
     now = clock.now()

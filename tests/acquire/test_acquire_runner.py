@@ -96,6 +96,26 @@ def test_crash_loses_only_the_exposure_in_flight_and_resume_completes(tmp_path):
     assert len(bb.take(bb.event == 0)) == 12  # the event of scan 0 was not repeated
 
 
+def test_interrupted_calibration_event_is_taken_again_whole(tmp_path):
+    clock = ManualClock(T0)
+    camera = FakeCamera(clock, 2)
+
+    def dying_camera():
+        if len(camera.times) == 4:  # during the ambient blackbody
+            raise SystemExit("power cut")
+        return camera()
+
+    with pytest.raises(SystemExit):
+        _runner(tmp_path, clock, dying_camera).run(resume=True, scans=[0])
+    clock.advance(600.0)
+    result = _runner(tmp_path, clock, camera).run(resume=True, scans=[0], start_s=T0)
+    assert result.n_calibration_frames == 6 and result.n_frames == 4
+    bb = read_blackbody_frames_table(tmp_path / "blackbody/frames.csv")
+    ev = bb.take(bb.band == 0)
+    assert list(ev.blackbody) == [1, 1, 1, 2, 2, 2]
+    np.testing.assert_allclose(ev.time_s, camera.times[4:10])  # all after the restart
+
+
 def test_resume_skips_scans_whose_window_has_passed(tmp_path):
     clock = ManualClock(T0)
     _runner(tmp_path, clock).run(scans=[0])

@@ -202,6 +202,10 @@ class DeviceRig:
     def start(self) -> DeviceRig:
         """Write the files, start every device and the fault schedule, then the ports file."""
         self._write_files()
+        for f in self.faults:
+            if f.kind == "rtk-loss":
+                t0 = self.twin.start_s + f.at_s
+                self.gnss.lose_fix(t0, t0 + f.duration_s, 0)
         self.clock.restart()  # scene time starts now, not when the twin was set up
         for dev in self.devices.values():
             dev.start()
@@ -234,8 +238,7 @@ class DeviceRig:
         self.log.append(f"{self.clock.now() - self.twin.start_s:.0f} s {fault} "
                         f"{'on' if on else 'off'}")
         if fault.kind == "rtk-loss":
-            t0 = self.twin.start_s + fault.at_s
-            self.gnss.lose_fix(t0, t0 + fault.duration_s, 0)
+            pass  # the receiver has it from the start, to the epoch (see start())
         elif fault.kind == "mute":
             target = self.server if fault.device == "camera" else self.devices[fault.device]
             target.mute = on
