@@ -73,6 +73,8 @@ class AcquisitionConfig:
     start_s : float, optional
         Planned start of scan 0, UTC epoch seconds (default: now; a resumed acquisition keeps
         its own).
+    scans : list of int, optional
+        The scans to take (default: all of the mission's).
     gnss_wait_s : float
         Wall seconds to wait for the receiver's first time sentence.
     warmup_s, tail_s : float
@@ -91,6 +93,7 @@ class AcquisitionConfig:
     camera: CameraSpec
     time_scale: float = 1.0
     start_s: float | None = None
+    scans: list[int] | None = None
     gnss_wait_s: float = 30.0
     warmup_s: float = 900.0
     tail_s: float = 900.0
@@ -214,6 +217,10 @@ def run_acquisition(cfg: AcquisitionConfig, progress: Progress = NULL_PROGRESS,
     mission = read_mission(cfg.mission_path, mission_label)
     setup = read_setup(cfg.setup_path)
     previous = _check_folder(root, _sha256(cfg.mission_path))
+    n_scans = int(mission["n_scans"])
+    if cfg.scans is not None and any(not 0 <= k < n_scans for k in cfg.scans):
+        raise InvalidInput(f"--scans asks for scan {max(cfg.scans)}; the mission has scans 0 to "
+                           f"{n_scans - 1}", mission_label, "n_scans")
     if "ptu" not in cfg.ports:
         raise InvalidInput("no pan/tilt unit port (--ptu)", field="ptu", exit_code=2)
     if cfg.time_scale != 1.0 and "gnss" not in cfg.ports:
@@ -339,7 +346,7 @@ def _run(cfg: AcquisitionConfig, mission: dict, mission_label: str, setup: Stati
                            settle_s=setup.settle_s, clock=clock.now, sleep=clock.sleep,
                            progress=progress, stop=stop, blackbodies=setup.blackbodies,
                            on_event=events, max_sleep_s=max(1.0, 0.25 * clock.time_scale))
-    result = runner.run(start_s=start_s, resume=True)
+    result = runner.run(scans=cfg.scans, start_s=start_s, resume=True)
     if not stop.is_set() and result.last_time_s is not None:
         _tail(cfg, inst, clock, stop, result.last_time_s, progress)
     events("acquire", "end", f"{result.n_frames} frames, {result.n_calibration_frames} "

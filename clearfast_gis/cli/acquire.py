@@ -32,6 +32,23 @@ def _utc(ctx: click.Context, param: click.Parameter, value: str | None) -> float
                                  f"2026-11-15T06:00:00Z, got {value!r}") from None
 
 
+def _scans(ctx: click.Context, param: click.Parameter, value: str | None) -> list[int] | None:
+    """``0-2,5`` -> [0, 1, 2, 5]."""
+    if value is None:
+        return None
+    out: set[int] = set()
+    try:
+        for part in value.replace(" ", "").split(","):
+            lo, sep, hi = part.partition("-")
+            a, b = int(lo), int(hi) if sep else int(lo)
+            if a < 0 or b < a:
+                raise ValueError
+            out.update(range(a, b + 1))
+    except ValueError:
+        raise click.BadParameter(f"expected scan numbers such as 0-2,5, got {value!r}") from None
+    return sorted(out)
+
+
 def _camera(ctx: click.Context, param: click.Parameter, value: str | None):
     if value is None:
         return None
@@ -61,6 +78,8 @@ def _camera(ctx: click.Context, param: click.Parameter, value: str | None):
               type=click.Path(file_okay=False, dir_okay=True, writable=True),
               help="Survey folder: new, or an interrupted acquisition of the same mission "
               "(resumed).")
+@click.option("--scans", callback=_scans, default=None, metavar="LIST",
+              help="Scans to take, such as 0-2,5 (default: all of the mission's).")
 @click.option("--start", "start_s", callback=_utc, default=None, metavar="UTC",
               help="Planned start of scan 0 (default: now).")
 @click.option("--time-scale", "time_scale", type=click.FloatRange(min=0.0, min_open=True),
@@ -77,7 +96,7 @@ def _camera(ctx: click.Context, param: click.Parameter, value: str | None):
               help="Seconds to wait for the receiver's first UTC time.")
 @progress_opt
 def command(ports_file, mission_path, setup_path, gnss_spec, ptu_spec, weather_spec,
-            soil_spec, camera_spec, survey_dir, start_s, time_scale, warmup_s, tail_s,
+            soil_spec, camera_spec, survey_dir, scans, start_s, time_scale, warmup_s, tail_s,
             gnss_wait_s, progress_mode) -> None:
     """Run a scanning mission stop-and-go with the field instruments (RTK-DGPS, pan/tilt unit,
     weather station, thermocouple logger, camera) into the survey folder SURVEY.
@@ -123,7 +142,8 @@ def command(ports_file, mission_path, setup_path, gnss_spec, ptu_spec, weather_s
         raise click.UsageError(f"missing {', '.join(missing)} (give them, or a --ports-file "
                                "that names them)")
     cfg = AcquisitionConfig(Path(survey_dir), mission, setup, ports, camera, scale, start_s,
-                            gnss_wait_s=gnss_wait_s, warmup_s=warmup_s, tail_s=tail_s)
+                            scans=scans, gnss_wait_s=gnss_wait_s, warmup_s=warmup_s,
+                            tail_s=tail_s)
     stop = threading.Event()
     previous = {}
 

@@ -105,6 +105,10 @@ def test_ports_file_paths_and_usage_errors(tmp_path):
     assert res.exit_code == 2 and "expected drop:DIR" in res.output
     res = _acquire("--start", "tomorrow", "-o", str(tmp_path / "s"))
     assert res.exit_code == 2 and "ISO 8601" in res.output
+    res = _acquire("--scans", "3-1", "-o", str(tmp_path / "s"))
+    assert res.exit_code == 2 and "expected scan numbers such as 0-2,5" in res.output
+    from clearfast_gis.cli.acquire import _scans
+    assert _scans(None, None, "0-2, 5,1") == [0, 1, 2, 5]
     res = CliRunner().invoke(group, ["simulate-devices", "--ports-file", str(path),
                                      "--fault", "unplug:camera@5+5"])
     assert res.exit_code == 2 and "the camera can only be muted" in res.output
