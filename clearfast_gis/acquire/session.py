@@ -3,15 +3,16 @@
 :func:`run_acquisition` is ``clearfast acquire``:
 
 1. read the mission and the station set-up; check the survey folder (a new one, or an
-   acquisition of the same mission to resume); open every port and the camera (nothing is
-   written before they all open);
+   acquisition of the same mission to resume); open every port and the camera; set up the
+   pan/tilt unit (resolution and limits from the unit) and check every mission and blackbody
+   position against its limits. Nothing is written before all of this has succeeded;
 2. start the loggers (GNSS receiver, polled weather station, thermocouple logger with the
    blackbody sensors), each in its own thread, reconnecting a lost port;
 3. take the survey clock from the receiver's UTC (:class:`~.clock.GnssClock`);
-4. (before anything is written, with step 1) set up the pan/tilt unit (resolution and limits
-   from the unit) and check every mission and blackbody position against its limits;
-5. write ``mission.json``, ``survey.json``, ``markers.csv`` and ``acquisition/session.json``;
-   wait (at most ``warmup_s``) until every instrument has reported once;
+4. wait (at most ``warmup_s``) until every instrument has reported once, so that the logs
+   begin before the first frame;
+5. write ``acquisition/session.json`` (planned start, mission checksum, one entry per run),
+   ``markers.csv``, ``mission.json`` and ``survey.json``;
 6. run the mission stop-and-go with the calibration event each scan (:class:`~.mission.
    MissionRunner`, resuming what an earlier run left);
 7. keep logging until every log reaches past the last frame (at most ``tail_s``), so that the
@@ -260,6 +261,8 @@ def run_acquisition(cfg: AcquisitionConfig, progress: Progress = NULL_PROGRESS,
                     ptu, events, progress, stop)
     finally:
         inst.close()
+        with contextlib.suppress(Exception):
+            ptu.port.close()  # reopened after a reconnection: not among inst.ports
         with contextlib.suppress(Exception):
             camera.close()
         events.close()
