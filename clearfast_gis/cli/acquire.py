@@ -9,15 +9,13 @@ interrupted acquisition.
 from __future__ import annotations
 
 import json
-import signal
 import sys
-import threading
 from pathlib import Path
 
 import click
 
 from clearfast_gis.cli.log import _port_opt
-from clearfast_gis.cli.options import make_progress, progress_opt
+from clearfast_gis.cli.options import make_progress, progress_opt, stop_on_signals
 
 
 def _utc(ctx: click.Context, param: click.Parameter, value: str | None) -> float | None:
@@ -144,19 +142,8 @@ def command(ports_file, mission_path, setup_path, gnss_spec, ptu_spec, weather_s
     cfg = AcquisitionConfig(Path(survey_dir), mission, setup, ports, camera, scale, start_s,
                             scans=scans, gnss_wait_s=gnss_wait_s, warmup_s=warmup_s,
                             tail_s=tail_s)
-    stop = threading.Event()
-    previous = {}
-
-    def request_stop(signum, frame) -> None:
-        stop.set()
-
-    for sig in (signal.SIGINT, signal.SIGTERM):
-        previous[sig] = signal.signal(sig, request_stop)
-    try:
+    with stop_on_signals() as stop:
         summary = run_acquisition(cfg, make_progress(progress_mode), stop)
-    finally:
-        for sig, handler in previous.items():
-            signal.signal(sig, handler)
     r = summary.result
     text = (f"{'resumed: ' if summary.resumed else ''}{r.n_frames} frames and "
             f"{r.n_calibration_frames} calibration frames in scans "

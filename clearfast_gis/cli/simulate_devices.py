@@ -10,15 +10,13 @@ the drivers speak and driven by the digital twin, and writes their paths to the 
 from __future__ import annotations
 
 import json
-import signal
 import sys
-import threading
 import time
 from pathlib import Path
 
 import click
 
-from clearfast_gis.cli.options import progress_opt, seed_opt
+from clearfast_gis.cli.options import progress_opt, seed_opt, stop_on_signals
 
 
 def _faults(ctx: click.Context, param: click.Parameter, value: tuple[str, ...]):
@@ -80,38 +78,26 @@ def command(ports_file, preset_name, scenario_path, seed, drift, time_scale, sta
         click.echo("building the digital twin ...", err=True)
     twin = build_twin(config, seed, drift, objects, draw_clutter)
     rig = DeviceRig(twin, Path(ports_file).resolve().parent, time_scale, start_s, faults=faults)
-    stop = threading.Event()
-    previous = {}
-
-    def request_stop(signum, frame) -> None:
-        stop.set()
-
-    for sig in (signal.SIGINT, signal.SIGTERM):
-        previous[sig] = signal.signal(sig, request_stop)
     t0 = time.monotonic()
-    try:
-        with rig:
-            ready = {"event": "ready", "stage": "simulate-devices",
-                     "ports_file": str(rig.ports_file),
-                     "scene_utc": format_utc(rig.clock.now(), "seconds"),
-                     "time_scale": time_scale,
-                     "devices": {k: d.path for k, d in rig.devices.items()},
-                     "camera": str(rig.server.folder)}
-            if progress_mode == "json":
-                sys.stdout.write(json.dumps(ready) + "\n")
-                sys.stdout.flush()
-            elif progress_mode == "bar":
-                click.echo(f"devices ready: {rig.ports_file} (scene time "
-                           f"{ready['scene_utc']}, x{time_scale:g}); Ctrl-C to stop", err=True)
-            while not stop.wait(0.2):
-                if rig.finished or (duration_s is not None
-                                    and time.monotonic() - t0 >= duration_s):
-                    break
-                if rig.server.error:
-                    raise click.ClickException(f"camera: {rig.server.error}")
-    finally:
-        for sig, handler in previous.items():
-            signal.signal(sig, handler)
+    with stop_on_signals() as stop, rig:
+        ready = {"event": "ready", "stage": "simulate-devices",
+                 "ports_file": str(rig.ports_file),
+                 "scene_utc": format_utc(rig.clock.now(), "seconds"),
+                 "time_scale": time_scale,
+                 "devices": {k: d.path for k, d in rig.devices.items()},
+                 "camera": str(rig.server.folder)}
+        if progress_mode == "json":
+            sys.stdout.write(json.dumps(ready) + "\n")
+            sys.stdout.flush()
+        elif progress_mode == "bar":
+            click.echo(f"devices ready: {rig.ports_file} (scene time "
+                       f"{ready['scene_utc']}, x{time_scale:g}); Ctrl-C to stop", err=True)
+        while not stop.wait(0.2):
+            if rig.finished or (duration_s is not None
+                                and time.monotonic() - t0 >= duration_s):
+                break
+            if rig.server.error:
+                raise click.ClickException(f"camera: {rig.server.error}")
     end = {"event": "end", "stage": "simulate-devices", "frames": rig.camera.n_frames,
            "scene_utc": format_utc(rig.clock.now(), "seconds"), "faults": rig.log}
     if progress_mode == "json":

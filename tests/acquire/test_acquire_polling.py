@@ -21,6 +21,7 @@ from clearfast_gis.survey import (
 )
 from clearfast_gis.survey.toa5 import toa5_text
 from clearfast_gis.timeutil import parse_utc
+from tests.acquire.test_acquire_faults import _until
 
 T0 = parse_utc("2026-11-15T00:00:00Z")
 
@@ -33,13 +34,6 @@ class SceneClock:
 
     def __call__(self) -> float:
         return self.t
-
-
-def _until(predicate, timeout_s: float = 5.0) -> None:
-    deadline = time.monotonic() + timeout_s
-    while not predicate():
-        assert time.monotonic() < deadline, "condition not reached"
-        time.sleep(0.005)
 
 
 def _table(n: int) -> WeatherLog:
