@@ -99,9 +99,9 @@ class MissionResult:
     scans : list of int
         Scans written (complete or, when stopped, partial).
     n_frames : int
-        Scan exposures taken (positions; each gives one row per band).
+        Scan exposures taken (positions; each gives one frame per band).
     n_calibration_frames : int
-        Blackbody exposures taken.
+        Blackbody exposures taken (each gives one frame per band).
     late_scans : list of int
         Scans that started after their planned time by more than 2 % of the scan interval
         (at least 1 s): the previous scan overran, or the run was resumed late.
@@ -113,6 +113,9 @@ class MissionResult:
         True when a stop request ended the run early.
     last_time_s : float or None
         UTC epoch seconds of the last exposure.
+    n_bands : int
+        Bands per exposure (0 before the first): ``n_frames * n_bands`` rows of
+        ``frames.csv``.
     """
 
     scans: list[int] = field(default_factory=list)
@@ -123,6 +126,7 @@ class MissionResult:
     n_retries: int = 0
     stopped: bool = False
     last_time_s: float | None = None
+    n_bands: int = 0
 
 
 class MissionRunner:
@@ -351,6 +355,7 @@ class MissionRunner:
                 self.store.stage(Capture(scan, kind, index, repeat, float(readback[0]),
                                          float(readback[1]), times, counts))
                 result.last_time_s = max(times)
+                result.n_bands = counts.shape[0]
                 taken += 1
                 if kind == POSITION:
                     result.n_frames += 1

@@ -352,12 +352,12 @@ def _run(cfg: AcquisitionConfig, mission: dict, mission_label: str, setup: Stati
     result = runner.run(scans=cfg.scans, start_s=start_s, resume=True)
     if not stop.is_set() and result.last_time_s is not None:
         _tail(cfg, inst, clock, stop, result.last_time_s, progress)
-    events("acquire", "end", f"{result.n_frames} frames, {result.n_calibration_frames} "
-           f"calibration frames, scans {result.scans}, missed {result.missed_scans}"
+    events("acquire", "end", f"{result.n_frames} position and {result.n_calibration_frames} "
+           f"blackbody exposures, scans {result.scans}, missed {result.missed_scans}"
            + (" (stopped)" if stop.is_set() else ""))
     run_info["ended_utc"] = format_utc(_safe_now(clock))
-    run_info["frames"] = result.n_frames
-    run_info["calibration_frames"] = result.n_calibration_frames
+    run_info["exposures"] = result.n_frames
+    run_info["calibration_exposures"] = result.n_calibration_frames
     run_info["stopped"] = stop.is_set()
     write_text(root / SESSION_REL, json.dumps(session, indent=1) + "\n")
     instruments = {lg.kind: lg.status() for lg in inst.loggers}

@@ -145,15 +145,17 @@ def command(ports_file, mission_path, setup_path, gnss_spec, ptu_spec, weather_s
     with stop_on_signals() as stop:
         summary = run_acquisition(cfg, make_progress(progress_mode), stop)
     r = summary.result
-    text = (f"{'resumed: ' if summary.resumed else ''}{r.n_frames} frames and "
-            f"{r.n_calibration_frames} calibration frames in scans "
-            f"{','.join(map(str, r.scans)) or 'none'}"
+    b = max(r.n_bands, 1)
+    text = (f"{'resumed: ' if summary.resumed else ''}{r.n_frames * b} frames "
+            f"({r.n_frames} positions x {b} bands) and {r.n_calibration_frames * b} blackbody "
+            f"frames in scans {','.join(map(str, r.scans)) or 'none'}"
             + (f"; missed scans {','.join(map(str, r.missed_scans))}" if r.missed_scans else "")
             + f" -> {survey_dir}")
     if progress_mode == "json":
         sys.stdout.write(json.dumps({"event": "summary", "stage": "acquire", "message": text,
-                                     "frames": r.n_frames,
-                                     "calibration_frames": r.n_calibration_frames,
+                                     "exposures": r.n_frames,
+                                     "calibration_exposures": r.n_calibration_frames,
+                                     "bands": r.n_bands,
                                      "scans": r.scans, "missed_scans": r.missed_scans,
                                      "late_scans": r.late_scans, "retries": r.n_retries,
                                      "stopped": summary.stopped, "events": summary.events,
