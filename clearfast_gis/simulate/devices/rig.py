@@ -73,10 +73,17 @@ class Fault:
     duration_s: float = 0.0
 
     def __str__(self) -> str:
+        """The ``--fault`` text (:func:`parse_fault` reads it back)."""
         if self.kind == "rtk-loss":
-            return f"rtk-loss@{self.at_s:g}+{self.duration_s:g}"
-        tail = f"+{self.duration_s:g}" if self.duration_s else ""
-        return f"{self.kind}:{self.device}@{self.at_s:g}{tail}"
+            return f"rtk-loss@{_secs(self.at_s)}+{_secs(self.duration_s)}"
+        tail = f"+{_secs(self.duration_s)}" if self.duration_s else ""
+        return f"{self.kind}:{self.device}@{_secs(self.at_s)}{tail}"
+
+
+def _secs(x: float) -> str:
+    """Seconds as plain digits (``3600``, ``0.25``), never in exponent form."""
+    x = float(x)
+    return str(int(x)) if x.is_integer() else f"{x:.6f}".rstrip("0").rstrip(".")
 
 
 def parse_fault(text: str) -> Fault:
