@@ -97,14 +97,15 @@ def command(ports_file, mission_path, setup_path, gnss_spec, ptu_spec, weather_s
             soil_spec, camera_spec, survey_dir, scans, start_s, time_scale, warmup_s, tail_s,
             gnss_wait_s, progress_mode) -> None:
     """Run a scanning mission stop-and-go with the field instruments (RTK-DGPS, pan/tilt unit,
-    weather station, thermocouple logger, camera) into the survey folder SURVEY.
+    weather station, thermocouple logger, camera) into the survey folder given with -o.
 
     Each scan starts with the blackbody calibration; every instrument is logged with UTC
     times; the folder is written frame by frame and a run that was interrupted (Ctrl-C,
-    SIGTERM, a crash) is resumed by the same command. Example with the device simulators:
+    SIGTERM, a crash) is resumed by the same command. Example with the device simulators
+    (24 h of the demo in about 40 s):
 
     \b
-      clearfast simulate-devices --ports-file sim/ports.json --time-scale 1000 &
+      clearfast simulate-devices --ports-file sim/ports.json --time-scale 2000 &
       clearfast acquire --ports-file sim/ports.json -o survey/
     """
     from clearfast_gis.acquire.camera import parse_camera_spec

@@ -47,7 +47,7 @@ def _utc(ctx: click.Context, param: click.Parameter, value: str | None) -> float
 @click.option("--drift", is_flag=True, help="The trial's sinking, tilting lift.")
 @click.option("--time-scale", "time_scale", type=click.FloatRange(min=0.0, min_open=True),
               default=1.0, show_default=True,
-              help="Scene seconds per second (1000 runs the 24 h demo in 86 s).")
+              help="Scene seconds per second (2000 runs the 24 h demo in about 45 s).")
 @click.option("--start", "start_s", default=None, metavar="UTC", callback=_utc,
               help="Scene time when the devices start (default: the twin's start).")
 @click.option("--fault", "faults", multiple=True, callback=_faults,

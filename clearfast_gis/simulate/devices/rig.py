@@ -207,7 +207,9 @@ class DeviceRig:
     # -- running ----------------------------------------------------------------------------
 
     def start(self) -> DeviceRig:
-        """Write the files, start every device and the fault schedule, then the ports file."""
+        """Write the files, start every device and the fault schedule, then the ports file
+        (an earlier run's is removed first: its appearance means ready)."""
+        self.ports_file.unlink(missing_ok=True)
         self._write_files()
         for f in self.faults:
             if f.kind == "rtk-loss":
