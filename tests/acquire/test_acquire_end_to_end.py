@@ -45,11 +45,12 @@ SCENARIO = {
 }
 # the simulators start at 08:00, scan 0 is planned at 08:40 and scan 1 at 12:40 (the run killed
 # in scan 0 is resumed well before 11:00 even on a busy machine); line noise at 11:00 and
-# 11:30, no RTK fix 11:20-11:25, and the receiver is unplugged from 12:38 to 12:46, during
-# scan 1 (the survey clock runs on without it)
+# 11:30, no RTK fix 11:20-11:25, and the receiver is unplugged from 12:30 to 12:50, when scan 1
+# begins (the survey clock runs on without it; scene frames after the calibration event stay
+# within the 600 s the processing bridges)
 PLANNED = "2026-11-15T08:40:00Z"
 FAULTS = ["noise:weather@10800", "rtk-loss@12000+300", "noise:soil@12600",
-          "unplug:gnss@16680+480"]
+          "unplug:gnss@16200+1200"]
 
 
 def _env() -> dict:
@@ -124,7 +125,7 @@ def test_acquisition_survives_faults_and_a_kill(acquired):
     assert len(session["runs"]) == 2 and not session["runs"][1]["stopped"]
     assert summary["instruments"]["weather"]["bad"] >= 1  # the burst of line noise
     assert summary["instruments"]["soil"]["bad"] + 0 >= 0
-    assert any("unplug:gnss@16680+480 on" in f for f in out["sim_end"]["faults"])
+    assert any("unplug:gnss@16200+1200 on" in f for f in out["sim_end"]["faults"])
 
 
 def test_acquired_folder_validates_and_matches_the_twin(acquired, twin):
@@ -173,14 +174,14 @@ def test_acquired_folder_validates_and_matches_the_twin(acquired, twin):
     np.testing.assert_allclose(gnss.lat_deg[ok], truth_g.lat_deg[k], atol=1e-9)
     lost = (gnss.time_s >= twin.start_s + 12000) & (gnss.time_s < twin.start_s + 12300)
     assert lost.any() and np.all(gnss.fix_quality[lost] == 0)
-    away = (twin.start_s + 16680, twin.start_s + 17160)
+    away = (twin.start_s + 16200, twin.start_s + 17400)
     assert not np.any((gnss.time_s > away[0] + 10) & (gnss.time_s < away[1] - 10))
-    # the survey clock ran on without the receiver: scan 1 began on time meanwhile (its
-    # calibration event at 12:40)
+    # the survey clock ran on without the receiver: scan 1 began meanwhile (its calibration
+    # event is planned at 12:40; a busy machine may delay it by minutes of scene time)
     bb = read_blackbody_frames_table(survey / "blackbody" / "frames.csv")
     t1 = bb.time_s[bb.event == 1]
-    assert away[0] < t1.min() < away[0] + 180.0
-    assert any(g["length_s"] >= 470 for g in report.summary["gnss_gaps"])
+    assert away[0] + 600.0 <= t1.min() < away[1]
+    assert any(g["length_s"] >= 1190 for g in report.summary["gnss_gaps"])
     # calibration: the heated blackbody gives more counts than the ambient one
     assert len(bb) == 2 * 2 * 10 * 2
     from clearfast_gis.survey import read_tiff_stack
