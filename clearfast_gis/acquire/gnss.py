@@ -1,10 +1,13 @@
-"""RTK-DGPS receiver logging: raw NMEA 0183 lines to ``gnss.nmea``, checksums, latest fix.
+"""RTK-DGPS receiver logging: raw NMEA 0183 lines to ``gnss.nmea``, checksums, fix, UTC time.
 
 Every complete line received is appended to the raw log exactly as it arrived (bytes and line
 ending kept; bad lines too, since the log is the receiver's record and
 :func:`clearfast_gis.survey.read_nmea` skips and counts them the same way). Each line is also
-checked: checksum errors and non-NMEA lines are counted, GGA sentences update the latest fix
-(dated by the last RMC sentence, else by the host clock's date).
+checked: checksum errors and non-NMEA lines are counted; RMC and ZDA sentences give the
+receiver's UTC time (passed on to ``on_time``, which disciplines the survey clock,
+:class:`~clearfast_gis.acquire.clock.GnssClock`); GGA sentences update the latest fix (dated by
+the last RMC or ZDA sentence, else by the host clock's date), and a change of fix quality
+(RTK fixed to float, loss of the fix) is reported as an event.
 """
 
 from __future__ import annotations
@@ -19,9 +22,12 @@ import pynmea2
 import serial
 
 from clearfast_gis.acquire.appendlog import AppendLog
-from clearfast_gis.acquire.linelogger import LineLogger
-from clearfast_gis.errors import InvalidInput
-from clearfast_gis.survey.nmea import parse_nmea
+from clearfast_gis.acquire.linelogger import EventSink, LineLogger
+from clearfast_gis.survey.nmea import FIELD_ERRORS, gga_fields, sentence_time
+from clearfast_gis.timeutil import format_utc
+
+#: half a day, seconds: a GGA time of day this far from the last dated one crossed midnight
+_HALF_DAY_S = 43200.0
 
 #: GGA fix quality -> short name for displays
 FIX_NAMES = {0: "no fix", 1: "GPS", 2: "DGPS", 3: "PPS", 4: "RTK fixed", 5: "RTK float",
@@ -93,38 +99,60 @@ class GnssLogger(LineLogger):
     path : path
         The raw log, normally ``<survey>/gnss.nmea``; appended to if it exists.
     clock : callable
-        Host UTC clock, epoch seconds (dates GGA epochs before any RMC, stamps arrivals).
+        Host UTC clock, epoch seconds (dates GGA epochs before any RMC or ZDA, stamps
+        arrivals).
     fsync_interval_s : float
         Seconds between fsyncs of the log.
+    on_time : callable, optional
+        ``on_time(utc_s, mono_s)`` for every RMC or ZDA sentence: the receiver's UTC epoch
+        seconds and the host's monotonic clock (``mono``) when its line arrived.
+    mono : callable
+        Host monotonic clock, seconds.
+    reopen, retry_s, on_event
+        As for :class:`~clearfast_gis.acquire.linelogger.LineLogger` (reconnection, events).
 
     Attributes
     ----------
     fix : GnssFix or None
         The latest GGA epoch.
+    time_s : float or None
+        UTC epoch seconds of the latest RMC or ZDA sentence.
     n_sentences, n_bad_checksum, n_unparseable : int
         Valid NMEA sentences, lines with a wrong or missing checksum, non-NMEA lines.
+    n_fix_changes : int
+        Changes of the fix quality (the first fix included).
     """
 
     kind = "gnss"
 
     def __init__(self, port: serial.SerialBase, path: str | os.PathLike,
-                 clock: Callable[[], float] = time.time, fsync_interval_s: float = 5.0) -> None:
-        super().__init__(port, AppendLog(path, fsync_interval_s=fsync_interval_s))
+                 clock: Callable[[], float] = time.time, fsync_interval_s: float = 5.0,
+                 on_time: Callable[[float, float], None] | None = None,
+                 mono: Callable[[], float] = time.monotonic,
+                 reopen: Callable[[], serial.SerialBase] | None = None, retry_s: float = 1.0,
+                 on_event: EventSink | None = None) -> None:
+        super().__init__(port, AppendLog(path, fsync_interval_s=fsync_interval_s),
+                         reopen=reopen, retry_s=retry_s, on_event=on_event)
         self._clock = clock
+        self._mono = mono
+        self.on_time = on_time
         self.fix: GnssFix | None = None
+        self.time_s: float | None = None
         self.n_sentences = 0
         self.n_bad_checksum = 0
         self.n_unparseable = 0
-        self._last_rmc = ""
+        self.n_fix_changes = 0
+        self._dated: tuple[float, float] | None = None  # (tod_s, midnight_s) of the last date
 
     def handle_lines(self, lines: list[bytes]) -> list[bytes]:
+        arrived = self._mono()
         for raw in lines:
             text = raw.decode("ascii", "replace").strip()
             if text:
-                self._check(text)
+                self._check(text, arrived)
         return lines
 
-    def _check(self, text: str) -> None:
+    def _check(self, text: str, arrived: float) -> None:
         verdict, msg = classify_sentence(text)
         if verdict == "bad_checksum":
             self.n_bad_checksum += 1
@@ -132,29 +160,51 @@ class GnssLogger(LineLogger):
         if verdict == "junk":
             self.n_unparseable += 1
             return
+        try:
+            when = sentence_time(msg)
+            gga = gga_fields(msg) if isinstance(msg, pynmea2.GGA) else None
+        except FIELD_ERRORS:
+            self.n_unparseable += 1
+            return
         self.n_sentences += 1
-        if isinstance(msg, pynmea2.RMC):
-            self._last_rmc = text
-        elif isinstance(msg, pynmea2.GGA):
-            now = self._clock()
-            try:
-                log = parse_nmea(text + "\n" + self._last_rmc, "gnss", fallback_date_s=now)
-            except InvalidInput:
-                self.n_unparseable += 1
-                return
-            if len(log) == 0:
-                self.n_unparseable += 1
-                return
-            self.fix = GnssFix(
-                time_s=float(log.time_s[0]), lat_deg=float(log.lat_deg[0]),
-                lon_deg=float(log.lon_deg[0]), alt_m=float(log.alt_m[0]),
-                fix_quality=int(log.fix_quality[0]), n_sats=int(log.n_sats[0]),
-                hdop=float(log.hdop[0]), received_s=now)
+        if when is not None:
+            self._dated = when
+            self.time_s = when[0] + when[1]
+            if self.on_time is not None:
+                self.on_time(self.time_s, arrived)
+        elif gga is not None:
+            self._update_fix(*gga)
+
+    def _midnight_of(self, tod_s: float, now_s: float) -> float:
+        """Epoch second of the midnight of a GGA time of day: the last RMC/ZDA date, rolled
+        over midnight, else the host clock's date."""
+        if self._dated is None:
+            return math.floor(now_s / 86400.0) * 86400.0
+        last_tod, midnight = self._dated
+        if tod_s < last_tod - _HALF_DAY_S:
+            return midnight + 86400.0
+        if tod_s > last_tod + _HALF_DAY_S:
+            return midnight - 86400.0
+        return midnight
+
+    def _update_fix(self, tod_s: float, payload: tuple) -> None:
+        now = self._clock()
+        lat, lon, alt, quality, n_sats, hdop = payload
+        old = self.fix
+        self.fix = GnssFix(time_s=self._midnight_of(tod_s, now) + tod_s, lat_deg=lat,
+                           lon_deg=lon, alt_m=alt, fix_quality=int(quality), n_sats=int(n_sats),
+                           hdop=hdop, received_s=now)
+        if old is None or old.fix_quality != self.fix.fix_quality:
+            self.n_fix_changes += 1
+            before = "" if old is None else f"{old.fix_name} -> "
+            self.event("fix", f"{before}{self.fix.fix_name} at "
+                       f"{format_utc(self.fix.time_s, 'seconds')[11:19]} UTC")
 
     def status(self) -> dict:
         out = super().status()
         out.update(sentences=self.n_sentences, bad_checksum=self.n_bad_checksum,
-                   unparseable=self.n_unparseable)
+                   unparseable=self.n_unparseable, fix_changes=self.n_fix_changes,
+                   time_utc=None if self.time_s is None else format_utc(self.time_s))
         f = self.fix
         if f is not None:
             out["fix"] = {"quality": f.fix_quality, "name": f.fix_name, "n_sats": f.n_sats,

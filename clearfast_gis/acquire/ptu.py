@@ -5,8 +5,9 @@ Protocol (PTU-D46/E46 command set, the subset a stop-and-go survey needs):
 - Commands are ASCII, case-insensitive, ended by a space delimiter: ``PP1000 `` sets the
   absolute pan position in steps, ``TP-500 `` the tilt position, ``A `` awaits the completion of
   both motions, ``PP `` / ``TP `` query the current positions, ``PR `` / ``TR `` query the
-  resolutions in arc seconds per step, ``ED `` disables the echo, ``FT `` selects terse
-  feedback, ``I `` immediate execution mode.
+  resolutions in arc seconds per step, ``PN `` / ``PX `` / ``TN `` / ``TX `` the minimum and
+  maximum positions in steps, ``ED `` disables the echo, ``FT `` selects terse feedback,
+  ``I `` immediate execution mode.
 - Each command is answered by one line ending in CR LF: ``*`` (accepted) optionally followed by
   a value (``* 1000`` terse, ``* Current Pan position is 1000`` verbose) or ``!`` followed by an
   error message (``! Maximum allowable Pan position is 3090``). With echo on, the line starts
@@ -14,10 +15,16 @@ Protocol (PTU-D46/E46 command set, the subset a stop-and-go survey needs):
 
 Angles are degrees (``pan_deg``, ``tilt_deg`` as in ``frames.csv``); steps are integers;
 ``resolution_deg`` is degrees per step (arc seconds / 3600).
+
+With ``reopen`` the driver survives a lost connection (USB adapter reset, cable pulled and
+plugged back): a move that fails on the port or gets no reply reopens the port every
+``retry_s`` seconds for up to ``reconnect_s`` seconds, sets the unit up again and repeats the
+whole move (the unit keeps its position while its serial link is down).
 """
 
 from __future__ import annotations
 
+import contextlib
 import math
 import re
 import time
@@ -27,7 +34,7 @@ from dataclasses import dataclass
 import serial
 
 from clearfast_gis.acquire.linelogger import port_name
-from clearfast_gis.acquire.ports import PortError, _reason
+from clearfast_gis.acquire.ports import SERIAL_ERRORS, PortError, _reason
 from clearfast_gis.errors import ClearfastError
 
 _NUMBER = re.compile(r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?")
@@ -39,6 +46,10 @@ class PtuError(ClearfastError):
 
 class PtuTimeout(PtuError):
     """The pan/tilt unit did not answer in time."""
+
+
+class PtuLimitError(PtuError):
+    """A requested position lies outside the unit's limits."""
 
 
 class PtuProtocolError(PtuError):
@@ -136,12 +147,30 @@ class PanTiltUnit:
         Timeout of ``A`` (await completion), seconds.
     clock : callable
         Monotonic clock, seconds (for timeouts).
+    reopen : callable, optional
+        ``reopen() -> port`` opens the unit's port again; with it a lost connection is
+        reconnected during :meth:`move_to`.
+    reconnect_s, retry_s : float
+        How long to try to reconnect and how often, seconds.
+    on_event : callable, optional
+        ``on_event("ptu", event, detail)`` for losses and reconnections.
+
+    Attributes
+    ----------
+    limits_steps : (int, int, int, int) or None
+        Pan minimum, pan maximum, tilt minimum, tilt maximum, steps (queried by
+        :meth:`initialize`; None when the unit does not tell).
+    n_reconnects : int
+        Successful reconnections.
     """
 
     def __init__(self, port: serial.SerialBase, pan_resolution_deg: float | None = None,
                  tilt_resolution_deg: float | None = None, timeout_s: float = 2.0,
                  move_timeout_s: float = 60.0,
-                 clock: Callable[[], float] = time.monotonic) -> None:
+                 clock: Callable[[], float] = time.monotonic,
+                 reopen: Callable[[], serial.SerialBase] | None = None,
+                 reconnect_s: float = 60.0, retry_s: float = 1.0,
+                 on_event: Callable[[str, str, str], None] | None = None) -> None:
         self.port = port
         self.pan_resolution_deg = pan_resolution_deg
         self.tilt_resolution_deg = tilt_resolution_deg
@@ -149,6 +178,16 @@ class PanTiltUnit:
         self.move_timeout_s = float(move_timeout_s)
         self._clock = clock
         self._buf = bytearray()
+        self.reopen = reopen
+        self.reconnect_s = float(reconnect_s)
+        self.retry_s = float(retry_s)
+        self.on_event = on_event
+        self.limits_steps: tuple[int, int, int, int] | None = None
+        self.n_reconnects = 0
+        self._set_timeout(port)
+
+    @staticmethod
+    def _set_timeout(port: serial.SerialBase) -> None:
         if port.timeout is None or port.timeout > 0.1:
             port.timeout = 0.05
 
@@ -178,7 +217,7 @@ class PanTiltUnit:
             self._buf.clear()
             self.port.write((cmd + " ").encode("ascii"))
             self.port.flush()
-        except (serial.SerialException, OSError) as exc:
+        except SERIAL_ERRORS as exc:
             raise PortError(f"write failed ({_reason(exc)})", self.name) from None
         deadline = self._clock() + timeout
         while True:
@@ -210,7 +249,7 @@ class PanTiltUnit:
                 return None
             try:
                 data = self.port.read(max(1, self.port.in_waiting))
-            except (serial.SerialException, OSError) as exc:
+            except SERIAL_ERRORS as exc:
                 raise PortError(f"read failed ({_reason(exc)})", self.name) from None
             self._buf += data
 
@@ -225,7 +264,8 @@ class PanTiltUnit:
     # -- set-up -----------------------------------------------------------------------------
 
     def initialize(self) -> None:
-        """Echo off, terse feedback, immediate mode; query resolutions not configured."""
+        """Echo off, terse feedback, immediate mode; query resolutions not configured and the
+        position limits (left unknown if the unit refuses the queries)."""
         self.command("ED")
         self.command("FT")
         self.command("I")
@@ -235,6 +275,41 @@ class PanTiltUnit:
                 self.pan_resolution_deg = pan
             if self.tilt_resolution_deg is None:
                 self.tilt_resolution_deg = tilt
+        if self.limits_steps is None:
+            try:
+                self.limits_steps = self.query_limits()
+            except PtuTimeout:
+                raise
+            except PtuError:  # older firmware without PN/PX/TN/TX
+                self.limits_steps = None
+
+    def query_limits(self) -> tuple[int, int, int, int]:
+        """Pan min, pan max, tilt min, tilt max positions, steps (``PN PX TN TX``)."""
+        pn, px, tn, tx = (int(round(self._query_number(c))) for c in ("PN", "PX", "TN", "TX"))
+        return pn, px, tn, tx
+
+    def limits_deg(self) -> tuple[float, float, float, float] | None:
+        """The limits in degrees (pan min, pan max, tilt min, tilt max), or None."""
+        if self.limits_steps is None:
+            return None
+        rp, rt = self._resolutions()
+        pn, px, tn, tx = self.limits_steps
+        return pn * rp, px * rp, tn * rt, tx * rt
+
+    def check_position(self, pan_deg: float, tilt_deg: float) -> None:
+        """Raise :class:`PtuLimitError` when (pan_deg, tilt_deg) is outside the known limits
+        (nothing when the limits are unknown)."""
+        if self.limits_steps is None:
+            return
+        ps, ts = self.to_steps(pan_deg, tilt_deg)
+        pn, px, tn, tx = self.limits_steps
+        lim = self.limits_deg()
+        for axis, steps, lo, hi, deg, lo_deg, hi_deg in (
+                ("pan", ps, pn, px, pan_deg, lim[0], lim[1]),
+                ("tilt", ts, tn, tx, tilt_deg, lim[2], lim[3])):
+            if not lo <= steps <= hi:
+                raise PtuLimitError(f"pan/tilt unit: {axis} {deg:.3f} deg is outside the "
+                                    f"unit's range {lo_deg:.3f} to {hi_deg:.3f} deg", self.name)
 
     def query_resolution(self) -> tuple[float, float]:
         """Pan and tilt resolution from ``PR``/``TR``, degrees per step."""
@@ -266,7 +341,14 @@ class PanTiltUnit:
 
     def set_position(self, pan_deg: float, tilt_deg: float) -> tuple[int, int]:
         """Command absolute positions (``PP<steps>``, ``TP<steps>``) without waiting;
-        return the commanded steps."""
+        return the commanded steps.
+
+        Raises
+        ------
+        PtuLimitError
+            Before anything is sent, for a position outside the unit's known limits.
+        """
+        self.check_position(pan_deg, tilt_deg)
         pan_steps, tilt_steps = self.to_steps(pan_deg, tilt_deg)
         self.command(f"PP{pan_steps}")
         self.command(f"TP{tilt_steps}")
@@ -285,7 +367,50 @@ class PanTiltUnit:
         return self.to_degrees(*self.position_steps())
 
     def move_to(self, pan_deg: float, tilt_deg: float) -> tuple[float, float]:
-        """Move to (pan_deg, tilt_deg), wait for completion, return the read-back angles."""
+        """Move to (pan_deg, tilt_deg), wait for completion, return the read-back angles.
+
+        With ``reopen``, a lost port or a missing reply reconnects (see :meth:`reconnect`) and
+        repeats the move once.
+        """
+        try:
+            return self._move(pan_deg, tilt_deg)
+        except (PortError, PtuTimeout) as exc:
+            if self.reopen is None:
+                raise
+            self.reconnect(exc)
+            return self._move(pan_deg, tilt_deg)
+
+    def _move(self, pan_deg: float, tilt_deg: float) -> tuple[float, float]:
         self.set_position(pan_deg, tilt_deg)
         self.await_completion()
         return self.position()
+
+    def reconnect(self, lost: ClearfastError) -> None:
+        """Reopen the port every ``retry_s`` seconds until the unit answers again (set up
+        anew: echo, feedback, mode), for at most ``reconnect_s`` seconds.
+
+        Raises
+        ------
+        ClearfastError
+            ``lost`` again when the unit does not come back in time.
+        """
+        if self.on_event is not None:
+            self.on_event("ptu", "disconnected", lost.message)
+        deadline = self._clock() + self.reconnect_s
+        while True:
+            with contextlib.suppress(Exception):
+                self.port.close()
+            try:
+                self.port = self.reopen()
+                self._set_timeout(self.port)
+                self._buf.clear()
+                self.initialize()
+            except (PortError, PtuError):
+                if self._clock() + self.retry_s > deadline:
+                    raise lost from None
+                time.sleep(self.retry_s)
+                continue
+            self.n_reconnects += 1
+            if self.on_event is not None:
+                self.on_event("ptu", "reconnected", self.name)
+            return

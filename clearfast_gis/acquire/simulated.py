@@ -1,26 +1,26 @@
-"""Simulated instruments for tests and dry runs: a PTU peer, pty pairs and a manual clock.
+"""Simulated instruments for tests and dry runs: a PTU peer and a manual clock.
 
 :class:`SimulatedPtu` answers the FLIR PTU ASCII protocol (see :mod:`.ptu`) with a motion
 model (constant speed per axis, position limits, echo and terse/verbose feedback like a real
 unit). It is a pure protocol engine (:meth:`SimulatedPtu.feed` bytes in,
-:meth:`SimulatedPtu.pending_output` bytes out) plus :meth:`SimulatedPtu.serve`, which speaks
-it on the master side of a pseudo-terminal; :func:`pty_pair` makes the pair, so a driver opens
-the slave device name exactly as it would open ``/dev/ttyUSB0``.
+:meth:`SimulatedPtu.pending_output` bytes out); :class:`~.ptydevice.PtyDevice` serves it on a
+pseudo-terminal, so a driver opens the slave device name exactly as it would open
+``/dev/ttyUSB0`` (:func:`simulated_ptu_device`).
 """
 
 from __future__ import annotations
 
 import contextlib
-import os
 import re
-import select
 import threading
 import time
-import tty
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass
 
 from clearfast_gis.acquire.ptu import PtuReply, format_reply
+from clearfast_gis.acquire.ptydevice import PtyDevice, pty_pair
+
+__all__ = ["ManualClock", "SimulatedPtu", "pty_pair", "simulated_ptu_device"]
 
 _COMMAND = re.compile(r"^([A-Z]+)(-?\d+)?$")
 
@@ -156,6 +156,11 @@ class SimulatedPtu:
             else:
                 axis.move(target, now)
                 self._reply(True)
+        elif op in ("PN", "PX", "TN", "TX") and arg is None:
+            lo = op[1] == "N"
+            pos = axis.min_steps if lo else axis.max_steps
+            self._reply(True, str(pos) if self.terse else
+                        f"{'Minimum' if lo else 'Maximum'} {axis.name} position is {pos}")
         elif op in ("PR", "TR") and arg is None:
             res = f"{axis.resolution_arcsec:.4f}"
             self._reply(True, res if self.terse
@@ -173,57 +178,13 @@ class SimulatedPtu:
         else:
             self._reply(False, "Illegal Command")
 
-    # -- transport --------------------------------------------------------------------------
-
-    def serve(self, fd: int, stop: threading.Event, poll_s: float = 0.005) -> None:
-        """Speak the protocol on file descriptor ``fd`` (a pty master) until ``stop``."""
-        while not stop.is_set():
-            ready, _, _ = select.select([fd], [], [], poll_s)
-            if ready:
-                try:
-                    data = os.read(fd, 4096)
-                except OSError:  # the other side closed
-                    return
-                if not data:
-                    return
-                self.feed(data)
-            out = self.pending_output()
-            if out:
-                os.write(fd, out)
-
-
-@contextlib.contextmanager
-def pty_pair() -> Iterator[tuple[int, str]]:
-    """A pseudo-terminal in raw mode: yields (master fd, slave device name).
-
-    The instrument side reads and writes the master fd; the driver opens the slave name with
-    ``serial.Serial``. Both ends are closed on exit.
-    """
-    master, slave = os.openpty()
-    try:
-        tty.setraw(slave)
-        tty.setraw(master)
-        yield master, os.ttyname(slave)
-    finally:
-        for fd in (master, slave):
-            with contextlib.suppress(OSError):
-                os.close(fd)
-
 
 @contextlib.contextmanager
 def simulated_ptu_device(ptu: SimulatedPtu | None = None) -> Iterator[tuple[str, SimulatedPtu]]:
     """Run a :class:`SimulatedPtu` behind a pty; yields (device name, simulator)."""
     ptu = SimulatedPtu() if ptu is None else ptu
-    stop = threading.Event()
-    with pty_pair() as (master, name):
-        thread = threading.Thread(target=ptu.serve, args=(master, stop), daemon=True,
-                                  name="clearfast-simulated-ptu")
-        thread.start()
-        try:
-            yield name, ptu
-        finally:
-            stop.set()
-            thread.join(timeout=2.0)
+    with PtyDevice(ptu, name="ptu") as device:
+        yield device.path, ptu
 
 
 class ManualClock:

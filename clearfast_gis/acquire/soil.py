@@ -11,8 +11,17 @@ temperature in degrees C per channel, channels in the order of the configured de
 are ignored; a ``T`` line with a bad time, a non-numeric value or the wrong number of
 channels is counted as bad and not written.
 
+The two calibration blackbodies' temperature sensors (paper §3.3) are wired to the same
+logger, which reports them once a minute on lines of their own::
+
+    B,2026-11-15T00:10:00Z,25.013,15.102
+
+(``B``, time, heated blackbody, ambient blackbody, degrees C).
+
 Output: ``soil.csv`` as :func:`clearfast_gis.survey.write_soil_log` writes it
-(``time_utc,T_0.020m_C,...``), header written once when the file is new.
+(``time_utc,T_0.020m_C,...``) and ``blackbody/temperatures.csv``
+(``time_utc,bb1_c,bb2_c``, as :func:`clearfast_gis.survey.write_blackbody_log`), headers
+written once when a file is new.
 """
 
 from __future__ import annotations
@@ -25,7 +34,7 @@ from collections.abc import Callable, Sequence
 import serial
 
 from clearfast_gis.acquire.appendlog import AppendLog
-from clearfast_gis.acquire.linelogger import LineLogger
+from clearfast_gis.acquire.linelogger import EventSink, LineLogger
 from clearfast_gis.errors import InvalidInput
 from clearfast_gis.timeutil import format_utc, parse_utc
 
@@ -38,15 +47,21 @@ def soil_header(depths_m: Sequence[float]) -> str:
     return "time_utc," + ",".join(f"T_{float(d):.3f}m_C" for d in depths_m) + "\n"
 
 
+#: header of ``blackbody/temperatures.csv``
+BLACKBODY_HEADER = "time_utc,bb1_c,bb2_c\n"
+
+
 def soil_row(time_s: float, temps_c: Sequence[float]) -> str:
-    """One ``soil.csv`` row: ISO UTC time to the second, temperatures (C) to 1e-4, NaN as
-    ``NAN``."""
+    """One ``soil.csv`` (or ``blackbody/temperatures.csv``) row: ISO UTC time to the second,
+    temperatures (C) to 1e-4, NaN as ``NAN``."""
     vals = ",".join("NAN" if not math.isfinite(v) else f"{v:.4f}" for v in map(float, temps_c))
     return f"{format_utc(float(time_s), 'seconds')},{vals}\n"
 
 
-def parse_thermocouple_line(text: str, n_channels: int) -> tuple[float, list[float]] | None:
-    """Parse ``T,<iso time>,<t1>,...``; None for a line that is not a record.
+def parse_thermocouple_line(text: str, n_channels: int, tag: str = "T"
+                            ) -> tuple[float, list[float]] | None:
+    """Parse ``T,<iso time>,<t1>,...`` (or the lines of another ``tag``, such as the
+    blackbodies' ``B``); None for a line that is not such a record.
 
     Raises
     ------
@@ -55,7 +70,7 @@ def parse_thermocouple_line(text: str, n_channels: int) -> tuple[float, list[flo
         ``n_channels``.
     """
     fields = [f.strip() for f in text.strip().split(",")]
-    if not fields or fields[0].upper() != "T":
+    if not fields or fields[0].upper() != tag:
         return None
     if len(fields) != n_channels + 2:
         raise ValueError(f"expected {n_channels} channels, got {len(fields) - 2}")
@@ -87,6 +102,19 @@ class ThermocoupleLogger(LineLogger):
         Host UTC clock, epoch seconds.
     fsync_interval_s : float
         Seconds between fsyncs.
+    blackbody_path : path, optional
+        ``<survey>/blackbody/temperatures.csv`` for the ``B`` lines (ignored without it).
+    reopen, retry_s, on_event
+        As for :class:`~clearfast_gis.acquire.linelogger.LineLogger` (reconnection, events).
+
+    Attributes
+    ----------
+    n_records, n_bad : int
+        Soil records written and bad ``T``/``B`` lines.
+    n_blackbody : int
+        Blackbody records written.
+    last, last_blackbody : (time_s, temperatures) or None
+        The latest soil and blackbody records.
 
     Raises
     ------
@@ -98,7 +126,10 @@ class ThermocoupleLogger(LineLogger):
 
     def __init__(self, port: serial.SerialBase, path: str | os.PathLike,
                  depths_m: Sequence[float] = DEFAULT_DEPTHS_M,
-                 clock: Callable[[], float] = time.time, fsync_interval_s: float = 5.0) -> None:
+                 clock: Callable[[], float] = time.time, fsync_interval_s: float = 5.0,
+                 blackbody_path: str | os.PathLike | None = None,
+                 reopen: Callable[[], serial.SerialBase] | None = None, retry_s: float = 1.0,
+                 on_event: EventSink | None = None) -> None:
         depths = [float(d) for d in depths_m]
         if not depths or any(not (math.isfinite(d) and d >= 0) for d in depths):
             raise InvalidInput("depths must be non-negative numbers (metres)", "soil depths")
@@ -106,35 +137,57 @@ class ThermocoupleLogger(LineLogger):
         if len({f"{d:.3f}" for d in depths}) != len(depths):
             raise InvalidInput("two thermocouples at the same depth", "soil depths")
         _check_existing(path, header)
-        super().__init__(port, AppendLog(path, header.encode("ascii"), fsync_interval_s))
+        if blackbody_path is not None:
+            _check_existing(blackbody_path, BLACKBODY_HEADER)
+        super().__init__(port, AppendLog(path, header.encode("ascii"), fsync_interval_s),
+                         reopen=reopen, retry_s=retry_s, on_event=on_event)
+        self.blackbody_log = None if blackbody_path is None else AppendLog(
+            blackbody_path, BLACKBODY_HEADER.encode("ascii"), fsync_interval_s)
         self.depths_m = tuple(depths)
         self._clock = clock
         self.n_records = 0
         self.n_bad = 0
+        self.n_blackbody = 0
         self.last: tuple[float, list[float]] | None = None
+        self.last_blackbody: tuple[float, list[float]] | None = None
 
     def handle_lines(self, lines: list[bytes]) -> list[bytes]:
         out: list[bytes] = []
+        bb: list[bytes] = []
         for raw in lines:
             text = raw.decode("utf-8", "replace")
             try:
                 rec = parse_thermocouple_line(text, len(self.depths_m))
+                bb_rec = None if rec is not None else parse_thermocouple_line(text, 2, "B")
             except (ValueError, OverflowError, OSError):
                 self.n_bad += 1
                 continue
-            if rec is None:
-                continue
-            self.n_records += 1
-            self.last = rec
-            out.append(soil_row(*rec).encode("ascii"))
+            if rec is not None:
+                self.n_records += 1
+                self.last = rec
+                out.append(soil_row(*rec).encode("ascii"))
+            elif bb_rec is not None and self.blackbody_log is not None:
+                self.n_blackbody += 1
+                self.last_blackbody = bb_rec
+                bb.append(soil_row(*bb_rec).encode("ascii"))
+        if self.blackbody_log is not None:
+            self.blackbody_log.append(bb)
         return out
+
+    def close_logs(self) -> None:
+        super().close_logs()
+        if self.blackbody_log is not None:
+            self.blackbody_log.close()
 
     def status(self) -> dict:
         out = super().status()
         out.update(records=self.n_records, bad=self.n_bad)
-        if self.last is not None:
-            out["last"] = {"time_utc": format_utc(self.last[0], "seconds"),
-                           "temp_c": [None if math.isnan(v) else v for v in self.last[1]]}
+        for key, rec in (("last", self.last), ("last_blackbody", self.last_blackbody)):
+            if rec is not None:
+                out[key] = {"time_utc": format_utc(rec[0], "seconds"),
+                            "temp_c": [None if math.isnan(v) else v for v in rec[1]]}
+        if self.blackbody_log is not None:
+            out["blackbody_records"] = self.n_blackbody
         return out
 
     def status_text(self) -> str:

@@ -13,6 +13,21 @@ Output: ``weather.dat`` in TOA5 exactly as :func:`clearfast_gis.survey.write_toa
 header written once when the file is new; the station's record number is kept (or counted
 on from the file's last record when the station sends none). Lines that are not a valid
 record are counted, not written.
+
+Polled stations (``poll_interval_s``): the datalogger's program answers a one-line request
+for the records it holds from a record number on::
+
+    host:    GET 42<CR><LF>
+    station: "2026-11-15 00:42:00",42,15.21,60.3,1005.2,2.10,0,301.5,0<CR><LF>
+             "2026-11-15 00:43:00",43,15.19,60.4,1005.2,2.04,0,301.2,0<CR><LF>
+             END<CR><LF>
+
+oldest first, at most a page of records (then ``MORE`` instead of ``END``: the logger asks
+again at once). The logger asks for the record after the last one in ``weather.dat``, so a
+restarted acquisition or a reconnected station fills the gap from the station's memory and
+never writes a record twice. Requests go out every ``poll_interval_s`` seconds of the survey
+clock; a request without ``END`` or ``MORE`` within ``reply_timeout_s`` (wall seconds) counts
+as a missing reply and is repeated at the next interval.
 """
 
 from __future__ import annotations
@@ -27,8 +42,9 @@ import numpy as np
 import serial
 
 from clearfast_gis.acquire.appendlog import AppendLog
-from clearfast_gis.acquire.linelogger import LineLogger
-from clearfast_gis.errors import InvalidInput
+from clearfast_gis.acquire.linelogger import EventSink, LineLogger
+from clearfast_gis.acquire.ports import SERIAL_ERRORS, PortError, _reason
+from clearfast_gis.errors import ClearfastError, InvalidInput
 from clearfast_gis.survey.toa5 import COLUMNS, WeatherLog, toa5_text
 from clearfast_gis.timeutil import format_utc, parse_utc
 
@@ -88,9 +104,26 @@ class WeatherStationLogger(LineLogger):
     station : str
         Station name written in the TOA5 environment line of a new file.
     clock : callable
-        Host UTC clock, epoch seconds (for the age of the last record).
+        UTC clock, epoch seconds: the survey clock (times the polls; no poll goes out while it
+        raises :class:`~clearfast_gis.errors.ClearfastError`, i.e. before it has a time).
     fsync_interval_s : float
         Seconds between fsyncs.
+    poll_interval_s : float, optional
+        Poll the station (``GET <record>``) every so many seconds of ``clock``; None for a
+        station that sends its records by itself.
+    reply_timeout_s : float
+        Wall seconds a poll waits for its ``END`` or ``MORE``.
+    mono : callable
+        Host monotonic clock, seconds (reply timeouts).
+    reopen, retry_s, on_event
+        As for :class:`~clearfast_gis.acquire.linelogger.LineLogger` (reconnection, events).
+
+    Attributes
+    ----------
+    n_records, n_bad, n_duplicates : int
+        Records written, lines that are not records, records received again (polling).
+    n_polls, n_timeouts : int
+        Requests sent and requests left without a complete reply.
 
     Raises
     ------
@@ -102,16 +135,65 @@ class WeatherStationLogger(LineLogger):
 
     def __init__(self, port: serial.SerialBase, path: str | os.PathLike,
                  station: str = "clearfast", clock: Callable[[], float] = time.time,
-                 fsync_interval_s: float = 5.0) -> None:
+                 fsync_interval_s: float = 5.0, poll_interval_s: float | None = None,
+                 reply_timeout_s: float = 5.0, mono: Callable[[], float] = time.monotonic,
+                 reopen: Callable[[], serial.SerialBase] | None = None, retry_s: float = 1.0,
+                 on_event: EventSink | None = None) -> None:
         header = toa5_header(station)
         _check_existing(path, header)
-        super().__init__(port, AppendLog(path, header.encode("ascii"), fsync_interval_s))
+        super().__init__(port, AppendLog(path, header.encode("ascii"), fsync_interval_s),
+                         reopen=reopen, retry_s=retry_s, on_event=on_event)
         self._next_record = _next_record(self.log.read_existing())
         self._columns = list(DEFAULT_INPUT_COLUMNS)
         self._clock = clock
+        self._mono = mono
+        self.poll_interval_s = poll_interval_s
+        self.reply_timeout_s = float(reply_timeout_s)
         self.n_records = 0
         self.n_bad = 0
+        self.n_duplicates = 0
+        self.n_polls = 0
+        self.n_timeouts = 0
         self.last: dict[str, float] | None = None
+        self._asked_at: float | None = None  # monotonic time of the unanswered request
+        self._next_poll_s = -math.inf
+
+    # -- polling ----------------------------------------------------------------------------
+
+    def poll(self) -> int:
+        """Send a due request (polled stations), then read and process what arrived."""
+        if self.poll_interval_s is not None:
+            self._request_if_due()
+        return super().poll()
+
+    def _request_if_due(self) -> None:
+        if self._asked_at is not None:
+            if self._mono() - self._asked_at <= self.reply_timeout_s:
+                return
+            self.n_timeouts += 1
+            self._asked_at = None
+            self.event("no reply", f"GET {self._next_record}: no END within "
+                       f"{self.reply_timeout_s:g} s")
+        try:
+            now = self._clock()
+        except ClearfastError:  # the survey clock has no time yet
+            return
+        interval = float(self.poll_interval_s)
+        if now < self._next_poll_s - 2.0 * interval:  # the clock was set back
+            self._next_poll_s = now
+        if now < self._next_poll_s:
+            return
+        try:
+            self.port.write(f"GET {self._next_record}\r\n".encode("ascii"))
+        except SERIAL_ERRORS as exc:
+            raise PortError(f"write failed ({_reason(exc)})", self.port_name) from None
+        self.n_polls += 1
+        self._asked_at = self._mono()
+        self._next_poll_s = now + interval
+
+    def on_reconnect(self) -> None:
+        self._asked_at = None
+        self._next_poll_s = -math.inf  # ask at once for what was missed
 
     def handle_lines(self, lines: list[bytes]) -> list[bytes]:
         out: list[bytes] = []
@@ -131,6 +213,11 @@ class WeatherStationLogger(LineLogger):
             self.n_bad += 1
             return None
         first = fields[0].strip() if fields else ""
+        if self.poll_interval_s is not None and first in ("END", "MORE") and len(fields) == 1:
+            self._asked_at = None
+            if first == "MORE":
+                self._next_poll_s = -math.inf
+            return None
         if first == "TIMESTAMP":
             self._columns = [f.strip() for f in fields]
             return None
@@ -153,6 +240,9 @@ class WeatherStationLogger(LineLogger):
         except (ValueError, KeyError, IndexError, OverflowError, OSError):
             self.n_bad += 1
             return None
+        if self.poll_interval_s is not None and record < self._next_record:
+            self.n_duplicates += 1
+            return None
         self._next_record = record + 1
         self.n_records += 1
         self.last = {"time_s": time_s, **values}
@@ -161,6 +251,9 @@ class WeatherStationLogger(LineLogger):
     def status(self) -> dict:
         out = super().status()
         out.update(records=self.n_records, bad=self.n_bad)
+        if self.poll_interval_s is not None:
+            out.update(polls=self.n_polls, timeouts=self.n_timeouts,
+                       duplicates=self.n_duplicates)
         if self.last is not None:
             out["last"] = {"time_utc": format_utc(self.last["time_s"], "seconds"),
                            **{k: (None if math.isnan(v) else v)

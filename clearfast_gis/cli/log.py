@@ -11,15 +11,13 @@ stop every logger cleanly: each log ends with a complete line.
 from __future__ import annotations
 
 import json
-import signal
 import sys
-import threading
 import time
 from pathlib import Path
 
 import click
 
-from clearfast_gis.cli.options import progress_opt
+from clearfast_gis.cli.options import progress_opt, stop_on_signals
 
 
 def _port(kind: str):
@@ -55,11 +53,11 @@ def _port_opt(name: str, kind: str, what: str):
 
 
 def _file_names(survey_dir: Path) -> dict[str, str]:
-    names = {"gnss": "gnss.nmea", "weather": "weather.dat", "soil": "soil.csv"}
+    from clearfast_gis.survey.manifest import DEFAULT_FILES, read_survey_json
+
+    names = {k: DEFAULT_FILES[k] for k in ("gnss", "weather", "soil")}
     manifest = survey_dir / "survey.json"
     if manifest.exists():
-        from clearfast_gis.survey.manifest import read_survey_json
-
         files = read_survey_json(manifest, "survey.json")["files"]
         names.update({k: files[k] for k in names if k in files})
     return names
@@ -160,43 +158,34 @@ def command(gnss_spec, weather_spec, soil_spec, ptu_spec, soil_depths: tuple[flo
     except BaseException:
         for p in parts:
             if hasattr(p, "log"):
-                p.log.close()
+                p.close_logs()
         for port in ports.values():
             port.close()
         raise
 
-    stop = threading.Event()
-    previous = {}
-
-    def request_stop(signum, frame) -> None:
-        stop.set()
-
-    for sig in (signal.SIGINT, signal.SIGTERM):
-        previous[sig] = signal.signal(sig, request_stop)
     display = _Display(progress_mode)
     t0 = time.monotonic()
-    try:
-        threads = [p.start(stop) for p in parts]
-        display.emit("start", 0.0, parts)
-        while not stop.is_set():
-            elapsed = time.monotonic() - t0
-            if duration_s is not None and elapsed >= duration_s:
-                break
-            wait = status_s if duration_s is None else min(status_s, duration_s - elapsed)
-            if stop.wait(max(0.0, wait)):
-                break
-            display.emit("status", time.monotonic() - t0, parts)
-            if not any(t.is_alive() for t in threads):
-                break  # every instrument failed
-        stop.set()
-        for t in threads:
-            t.join(timeout=10.0)
-    finally:
-        stop.set()
-        for sig, handler in previous.items():
-            signal.signal(sig, handler)
-        for port in ports.values():
-            port.close()
+    with stop_on_signals() as stop:
+        try:
+            threads = [p.start(stop) for p in parts]
+            display.emit("start", 0.0, parts)
+            while not stop.is_set():
+                elapsed = time.monotonic() - t0
+                if duration_s is not None and elapsed >= duration_s:
+                    break
+                wait = status_s if duration_s is None else min(status_s, duration_s - elapsed)
+                if stop.wait(max(0.0, wait)):
+                    break
+                display.emit("status", time.monotonic() - t0, parts)
+                if not any(t.is_alive() for t in threads):
+                    break  # every instrument failed
+            stop.set()
+            for t in threads:
+                t.join(timeout=10.0)
+        finally:
+            stop.set()
+            for port in ports.values():
+                port.close()
     display.emit("end", time.monotonic() - t0, parts, final=True)
     errors = [p.error for p in parts if p.error]
     if errors:

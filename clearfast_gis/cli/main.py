@@ -30,6 +30,8 @@ SUBCOMMANDS: dict[str, tuple[str, str]] = {
     "export": ("export", "Export products for a mine action centre."),
     "batch": ("batch", "Convert many surveys, locally or on a Dask cluster."),
     "log": ("log", "Log the field instruments over serial ports."),
+    "acquire": ("acquire", "Run a scanning mission with the field instruments."),
+    "simulate-devices": ("simulate_devices", "Serve the digital twin's instruments on ptys."),
     "demo": ("demo", "Simulate the embedded demo survey and process it end to end."),
 }
 

@@ -2,6 +2,11 @@
 
 from __future__ import annotations
 
+import contextlib
+import signal
+import threading
+from collections.abc import Iterator
+
 import click
 
 from clearfast_gis.progress import Progress
@@ -98,3 +103,22 @@ def build_options(params: dict, invert: bool = True):
     if params.get("no_atmosphere"):
         kw["atmosphere"] = False
     return ProcessOptions(invert=invert, **kw)
+
+
+@contextlib.contextmanager
+def stop_on_signals() -> Iterator[threading.Event]:
+    """An event set by Ctrl-C or SIGTERM during the block (the previous handlers come back
+    after it): long-running commands stop cleanly at their next check."""
+    stop = threading.Event()
+    previous = {}
+
+    def request_stop(signum, frame) -> None:
+        stop.set()
+
+    for sig in (signal.SIGINT, signal.SIGTERM):
+        previous[sig] = signal.signal(sig, request_stop)
+    try:
+        yield stop
+    finally:
+        for sig, handler in previous.items():
+            signal.signal(sig, handler)

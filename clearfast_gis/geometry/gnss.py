@@ -117,14 +117,7 @@ class PlatformTrack:
 
     def distance_to_fix_s(self, time_s: np.ndarray) -> np.ndarray:
         """Seconds from each time to the nearest usable fix (inf if there is none)."""
-        t = np.atleast_1d(np.asarray(time_s, dtype=float))
-        tu = self.usable_time_s
-        if tu.size == 0:
-            return np.full(t.shape, np.inf)
-        i = np.clip(np.searchsorted(tu, t), 1, max(tu.size - 1, 1))
-        left = np.abs(t - tu[i - 1])
-        right = np.abs(tu[np.minimum(i, tu.size - 1)] - t)
-        return np.minimum(left, right)
+        return distance_to_nearest_s(self.usable_time_s, time_s)
 
     def covered(self, time_s: np.ndarray) -> np.ndarray:
         """True where a time is within ``max_gap_s`` of a usable fix."""
@@ -242,13 +235,30 @@ def platform_track(gnss_log: GnssArrays, epsg: int, ground_altitude_m: float,
     return PlatformTrack(t, quality, usable, pos, int(epsg), float(max_gap_s), source)
 
 
+#: losses of fix the smoothed track of a quasi-static platform bridges, seconds
+STATIC_BRIDGE_S = 600.0
+
+
+def distance_to_nearest_s(sorted_times_s: np.ndarray, time_s: np.ndarray) -> np.ndarray:
+    """Seconds from each of ``time_s`` to the nearest of ``sorted_times_s`` (increasing; inf
+    when it is empty)."""
+    t = np.atleast_1d(np.asarray(time_s, dtype=float))
+    tu = np.asarray(sorted_times_s, dtype=float)
+    if tu.size == 0:
+        return np.full(t.shape, np.inf)
+    i = np.clip(np.searchsorted(tu, t), 1, max(tu.size - 1, 1))
+    left = np.abs(t - tu[i - 1])
+    right = np.abs(tu[np.minimum(i, tu.size - 1)] - t)
+    return np.minimum(left, right)
+
+
 FIX_SIGMA_M: dict[int, float] = {4: 0.02, 5: 0.30, 2: 0.8, 1: 2.0, 6: 5.0}
 """Typical 1-sigma horizontal position noise per GGA fix quality, metres (RTK fixed,
 RTK float, DGPS, autonomous, dead reckoning); other qualities count as autonomous."""
 
 
 def smooth_static_track(track: PlatformTrack, window_s: float = 600.0,
-                        max_gap_s: float = 600.0) -> PlatformTrack:
+                        max_gap_s: float = STATIC_BRIDGE_S) -> PlatformTrack:
     """Smooth the track of a quasi-static platform (a parked boom lift).
 
     Each usable epoch's position is replaced by a local linear fit in time over the usable

@@ -247,10 +247,11 @@ def base_manifest(survey, epsg: int, options, scan_records: dict[int, dict], fix
                                       if c.get("applied"))}
              for s, r in sorted(scan_records.items())]
     inputs = {}
+    root = Path(survey.root).resolve()  # survey.path() resolves; the root may be relative
     for key in ("survey", "mission", "frames", "blackbody_frames", "blackbody_log", "gnss",
                 "weather", "soil"):
-        p = survey.root / "survey.json" if key == "survey" else survey.path(key)
-        inputs[p.relative_to(survey.root).as_posix()] = sha256_file(p)
+        p = root / "survey.json" if key == "survey" else survey.path(key)
+        inputs[p.relative_to(root).as_posix()] = sha256_file(p)
     return {
         "survey_id": survey.manifest["survey_id"],
         "crs": {"epsg": int(epsg)},

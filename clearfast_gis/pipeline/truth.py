@@ -74,7 +74,8 @@ class TruthScore:
 
 
 def read_truth_objects(survey: str | Path) -> list[dict]:
-    """Rows of ``truth/objects.csv`` with numeric fields converted."""
+    """Rows of ``<survey>/truth/objects.csv`` with numeric fields converted (``survey`` is any
+    folder holding ``truth/``: a simulated survey, or the device simulators' folder)."""
     with open(Path(survey) / "truth" / "objects.csv", newline="") as fh:
         rows = list(csv.DictReader(fh))
     for r in rows:
@@ -84,7 +85,8 @@ def read_truth_objects(survey: str | Path) -> list[dict]:
 
 
 def score_against_truth(survey: str | Path, products: str | Path, max_depth_m: float = 0.05,
-                        match_radius_m: float | None = None) -> TruthScore:
+                        match_radius_m: float | None = None,
+                        truth: str | Path | None = None) -> TruthScore:
     """Match suspects to true mines.
 
     A mine counts as detected when a suspect of any class lies within ``match_radius_m``
@@ -96,10 +98,13 @@ def score_against_truth(survey: str | Path, products: str | Path, max_depth_m: f
     survey, products : path
     max_depth_m : float
         Only mines surface-laid or buried at most this deep are scored for detection.
+    truth : path, optional
+        The folder holding ``truth/`` when it is not the survey (an acquisition from the
+        device simulators: their folder).
     """
     import geopandas as gpd
 
-    truth = read_truth_objects(survey)
+    truth = read_truth_objects(survey if truth is None else truth)
     mines = [r for r in truth if r["kind"] in MINE_KINDS]
     gpkg = Path(products) / "anomalies.gpkg"
     sus = gpd.read_file(gpkg, layer="suspects")

@@ -42,6 +42,7 @@ from clearfast_gis.survey.nmea import (
     read_nmea,
     rmc_sentence,
     write_nmea,
+    zda_sentence,
 )
 from clearfast_gis.survey.schema import load_schema, schema_errors
 from clearfast_gis.survey.tables import (
@@ -70,4 +71,5 @@ __all__ = [
     "schema_errors", "tiff_info", "validate_survey", "write_blackbody_frames_table",
     "write_blackbody_log", "write_frames_table", "write_markers", "write_mission", "write_nmea",
     "write_soil_log", "write_survey_json", "write_tiff_stack", "write_toa5",
+    "zda_sentence",
 ]

@@ -17,8 +17,13 @@ from clearfast_gis.timeutil import parse_utc
 MAX_TEXT_BYTES = 2_000_000_000
 
 
-def read_text(path: str | os.PathLike, label: str | None = None) -> str:
-    """Read a text file (UTF-8, BOM tolerated) or raise :class:`InvalidInput` naming it."""
+def read_text(path: str | os.PathLike, label: str | None = None, errors: str = "strict") -> str:
+    """Read a text file (UTF-8, BOM tolerated) or raise :class:`InvalidInput` naming it.
+
+    ``errors="replace"`` reads a raw instrument log that may hold line noise: undecodable
+    bytes become U+FFFD, so that their lines are skipped and counted by the parser instead of
+    making the whole file unreadable.
+    """
     label = str(path) if label is None else label
     p = Path(path)
     try:
@@ -30,7 +35,7 @@ def read_text(path: str | os.PathLike, label: str | None = None) -> str:
     except OSError as exc:
         raise InvalidInput(f"cannot read: {exc.strerror or exc}", label) from None
     try:
-        return data.decode("utf-8-sig")
+        return data.decode("utf-8-sig", errors=errors)
     except UnicodeDecodeError as exc:
         raise InvalidInput(f"not UTF-8 text (byte {exc.start})", label) from None
 

@@ -19,6 +19,12 @@ from clearfast_gis.survey._text import read_text
 from clearfast_gis.survey.schema import schema_errors
 from clearfast_gis.timeutil import parse_utc
 
+#: the usual file names of a survey folder (survey.json ``files``)
+DEFAULT_FILES = {"mission": "mission.json", "frames": "frames.csv",
+                 "blackbody_frames": "blackbody/frames.csv",
+                 "blackbody_log": "blackbody/temperatures.csv", "gnss": "gnss.nmea",
+                 "weather": "weather.dat", "soil": "soil.csv", "markers": "markers.csv"}
+
 
 def _reject_constant(name: str) -> float:
     raise ValueError(f"{name} is not allowed in JSON")

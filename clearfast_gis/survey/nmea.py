@@ -1,9 +1,9 @@
-"""NMEA 0183 GNSS logs: GGA (position, fix quality) and RMC (date) sentences.
+"""NMEA 0183 GNSS logs: GGA (position, fix quality), RMC and ZDA (date and time) sentences.
 
 Parsing uses pynmea2 with checksum verification; lines with a wrong checksum are counted and
 skipped, as are lines that are not NMEA. Each GGA sentence gives one epoch; its date comes from
-the RMC sentence of the same epoch, else from the last known date (rolling over midnight), else
-from a fallback date (the survey start).
+the RMC or ZDA sentence of the same epoch, else from the last known date (rolling over
+midnight), else from a fallback date (the survey start).
 """
 
 from __future__ import annotations
@@ -126,6 +126,21 @@ def rmc_sentence(time_s: float, lat_deg: float, lon_deg: float, speed_kn: float 
     return _sentence(body)
 
 
+def zda_sentence(time_s: float, talker: str = "GP") -> str:
+    """A ``$xxZDA`` sentence (UTC time of day, day, month, four-digit year, zone 00:00) with a
+    correct checksum (no line ending).
+
+    Parameters
+    ----------
+    time_s : float
+        UTC epoch seconds (written to the millisecond).
+    talker : str
+        Talker identifier.
+    """
+    day = datetime.fromtimestamp(math.floor(round(float(time_s), 3)), tz=UTC)
+    return _sentence(f"{talker}ZDA,{_hhmmss(time_s)},{day:%d},{day:%m},{day:%Y},00,00")
+
+
 @dataclass(frozen=True)
 class GnssLog:
     """GNSS epochs from GGA sentences (arrays of length N, in file order).
@@ -202,6 +217,62 @@ def _date_field(text: str) -> float:
     return datetime(2000 + y, mo, d, tzinfo=UTC).timestamp()
 
 
+def _zda_date(day: str, month: str, year: str) -> float:
+    """ZDA day, month and four-digit year fields to the epoch second of that day's midnight."""
+    if not (day.isdigit() and month.isdigit() and len(year) == 4 and year.isdigit()):
+        raise ValueError(f"bad date {day!r} {month!r} {year!r}")
+    return datetime(int(year), int(month), int(day), tzinfo=UTC).timestamp()
+
+
+def sentence_time(msg: pynmea2.NMEASentence) -> tuple[float, float] | None:
+    """Time of day and date of an RMC or ZDA sentence: ``(tod_s, midnight_s)``.
+
+    ``tod_s`` is seconds since midnight UTC, ``midnight_s`` the epoch second of that day's
+    midnight (so the UTC epoch is their sum). None for other sentences.
+
+    Raises
+    ------
+    ValueError
+        For an RMC or ZDA sentence with a malformed time or date.
+    """
+    d = msg.data
+    if isinstance(msg, pynmea2.RMC):
+        return _tod_field(d[0]), _date_field(d[8])
+    if isinstance(msg, pynmea2.ZDA):
+        return _tod_field(d[0]), _zda_date(d[1], d[2], d[3])
+    return None
+
+
+def gga_fields(msg: pynmea2.GGA) -> tuple[float, tuple]:
+    """The epoch of a GGA sentence: ``(tod_s, (lat_deg, lon_deg, alt_m, quality, n_sats,
+    hdop))``; position NaN and quality 0 when the epoch has no usable fix.
+
+    Raises
+    ------
+    ValueError
+        For a malformed time, fix quality or satellite count.
+    """
+    d = msg.data
+    tod = _tod_field(d[0])
+    q = int(d[5]) if d[5] else 0
+    if not 0 <= q <= 9:
+        raise ValueError("fix quality")
+    lat = _coord(d[1], d[2], 2, 90.0)
+    lon = _coord(d[3], d[4], 3, 180.0)
+    alt = _num(d[8])
+    if q == 0 or math.isnan(lat) or math.isnan(lon):
+        lat = lon = alt = math.nan  # no usable fix in this epoch
+        q = 0
+    ns = int(d[6]) if d[6] else 0
+    if not 0 <= ns <= 999:
+        raise ValueError("satellites")
+    return tod, (lat, lon, alt, q, ns, _num(d[7]))
+
+
+#: parse errors of a sentence pynmea2 accepted but whose fields are malformed
+FIELD_ERRORS = (ValueError, TypeError, AttributeError, IndexError, OverflowError)
+
+
 def _num(text: str) -> float:
     try:
         v = float(text)
@@ -238,7 +309,7 @@ def parse_nmea(text: str, label: str = "gnss.nmea", fallback_date_s: float | Non
         File name used in error messages.
     fallback_date_s : float, optional
         Any UTC epoch second of the first day of the log (the survey start); used for GGA
-        epochs before the first RMC sentence when no RMC follows in the same epoch.
+        epochs before the first RMC or ZDA sentence when none follows in the same epoch.
 
     Raises
     ------
@@ -249,7 +320,9 @@ def parse_nmea(text: str, label: str = "gnss.nmea", fallback_date_s: float | Non
     bad_cs: list[int] = []
     junk: list[int] = []
     n_lines = 0
-    for lineno, raw in enumerate(text.splitlines(), start=1):
+    # lines end at LF (CR LF on the wire), as the logger splits them: control characters of
+    # line noise (CR, FF, VT, ...) stay inside their line
+    for lineno, raw in enumerate(text.split("\n"), start=1):
         line = raw.strip()
         if not line:
             continue
@@ -268,32 +341,18 @@ def parse_nmea(text: str, label: str = "gnss.nmea", fallback_date_s: float | Non
             continue
         try:
             if isinstance(msg, pynmea2.GGA):
-                d = msg.data
-                tod = _tod_field(d[0])
-                q = int(d[5]) if d[5] else 0
-                if not 0 <= q <= 9:
-                    raise ValueError("fix quality")
-                lat = _coord(d[1], d[2], 2, 90.0)
-                lon = _coord(d[3], d[4], 3, 180.0)
-                alt = _num(d[8])
-                if q == 0 or math.isnan(lat) or math.isnan(lon):
-                    lat = lon = alt = math.nan  # no usable fix in this epoch
-                    q = 0
-                ns = int(d[6]) if d[6] else 0
-                if not 0 <= ns <= 999:
-                    raise ValueError("satellites")
-                records.append(("GGA", tod, (lat, lon, alt, q, ns, _num(d[7]))))
-            elif isinstance(msg, pynmea2.RMC):
-                d = msg.data
-                records.append(("RMC", _tod_field(d[0]), _date_field(d[8])))
-        except (ValueError, TypeError, AttributeError, IndexError, OverflowError):
+                tod, payload = gga_fields(msg)
+                records.append(("GGA", tod, payload))
+            elif (when := sentence_time(msg)) is not None:
+                records.append(("DATE", *when))
+        except FIELD_ERRORS:
             junk.append(lineno)
             continue
     ggas = [i for i, r in enumerate(records) if r[0] == "GGA"]
     if not ggas:
         raise InvalidInput("no GGA sentence with a time (not an NMEA GNSS log?)", label)
 
-    first_rmc = next((r for r in records if r[0] == "RMC"), None)
+    first_dated = next((r for r in records if r[0] == "DATE"), None)
     cols: list[tuple] = []
     day_s: float | None = None
     last_tod = None
@@ -301,7 +360,7 @@ def parse_nmea(text: str, label: str = "gnss.nmea", fallback_date_s: float | Non
         kind, tod, payload = records[i]
         own = None
         for j in (i + 1, i - 1, i + 2, i - 2):
-            if 0 <= j < len(records) and records[j][0] == "RMC" and \
+            if 0 <= j < len(records) and records[j][0] == "DATE" and \
                     abs(records[j][1] - tod) < 1e-3:
                 own = records[j][2]
                 break
@@ -310,13 +369,13 @@ def parse_nmea(text: str, label: str = "gnss.nmea", fallback_date_s: float | Non
         elif day_s is not None:
             if last_tod is not None and tod < last_tod - 43200.0:
                 day_s += 86400.0
-        elif first_rmc is not None:
-            day_s = first_rmc[2] - (86400.0 if tod > first_rmc[1] + 43200.0 else 0.0)
+        elif first_dated is not None:
+            day_s = first_dated[2] - (86400.0 if tod > first_dated[1] + 43200.0 else 0.0)
         elif fallback_date_s is not None and math.isfinite(fallback_date_s):
             day_s = math.floor(fallback_date_s / 86400.0) * 86400.0
         else:
-            raise InvalidInput("no RMC sentence gives the date and no survey start date is known",
-                               label)
+            raise InvalidInput("no RMC or ZDA sentence gives the date and no survey start date "
+                               "is known", label)
         last_tod = tod
         cols.append((day_s + tod, *payload))
     arr = np.array(cols, dtype=np.float64).reshape(-1, 7)
@@ -330,9 +389,10 @@ def parse_nmea(text: str, label: str = "gnss.nmea", fallback_date_s: float | Non
 
 def read_nmea(path: str | os.PathLike, fallback_date_s: float | None = None,
               label: str | None = None) -> GnssLog:
-    """Read an NMEA 0183 log file (see :func:`parse_nmea`)."""
+    """Read an NMEA 0183 log file (see :func:`parse_nmea`); bytes that are not text (line
+    noise recorded by the logger) make their line unparseable, not the file unreadable."""
     label = str(path) if label is None else label
-    return parse_nmea(read_text(path, label), label, fallback_date_s)
+    return parse_nmea(read_text(path, label, errors="replace"), label, fallback_date_s)
 
 
 def gnss_sentences(log: GnssLog, talker: str = "GP") -> list[str]:

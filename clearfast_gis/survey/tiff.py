@@ -16,10 +16,13 @@ from clearfast_gis.atomic import atomic_path
 from clearfast_gis.errors import InvalidInput
 
 
-def write_tiff_stack(path: str | os.PathLike, stack_uint16: np.ndarray) -> Path:
+def write_tiff_stack(path: str | os.PathLike, stack_uint16: np.ndarray,
+                     metadata: dict | None = None) -> Path:
     """Write a (P, H, W) uint16 stack as a P-page uncompressed TIFF, atomically.
 
     Uncompressed contiguous pages let :func:`read_tiff_stack` memory-map the file.
+    ``metadata`` (JSON-ready) is stored beside the axes in the first page's description and
+    read back by :func:`tiff_metadata`.
     """
     stack = np.asarray(stack_uint16)
     if stack.ndim == 2:
@@ -27,8 +30,29 @@ def write_tiff_stack(path: str | os.PathLike, stack_uint16: np.ndarray) -> Path:
     if stack.ndim != 3 or stack.dtype != np.uint16:
         raise ValueError(f"expected a (P, H, W) uint16 stack, got {stack.shape} {stack.dtype}")
     with atomic_path(path) as tmp:
-        tifffile.imwrite(tmp, stack, photometric="minisblack", metadata={"axes": "QYX"})
+        tifffile.imwrite(tmp, stack, photometric="minisblack",
+                         metadata={"axes": "QYX", **(metadata or {})})
     return Path(path)
+
+
+def tiff_metadata(path: str | os.PathLike, label: str | None = None) -> dict:
+    """The metadata :func:`write_tiff_stack` stored (empty for other TIFFs).
+
+    Raises
+    ------
+    InvalidInput
+        When the file is missing or not a TIFF.
+    """
+    label = str(path) if label is None else label
+    try:
+        with tifffile.TiffFile(path) as tif:
+            found = tif.shaped_metadata
+    except FileNotFoundError:
+        raise InvalidInput("file not found", label) from None
+    except Exception as exc:  # tifffile raises many kinds on corrupt input
+        msg = " ".join(str(exc).split())[:120] or type(exc).__name__
+        raise InvalidInput(f"not a readable TIFF ({msg})", label) from None
+    return dict(found[0]) if found else {}
 
 
 @dataclass(frozen=True)

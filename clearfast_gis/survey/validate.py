@@ -127,14 +127,15 @@ class _Checker:
             self.problem(exc.path or file, exc.field or "", exc.message)
 
     def text(self, rel: str, key: str) -> str | None:
-        """Text of ``files.<key>`` or None after recording the problem."""
+        """Text of ``files.<key>`` or None after recording the problem (the raw GNSS log
+        may hold line noise that is not text; see :func:`read_text`)."""
         try:
             path = resolve_inside(self.root, rel, MANIFEST_NAME, f"files.{key}")
         except InvalidInput as exc:
             self.problem(MANIFEST_NAME, exc.field or f"files.{key}", exc.message)
             return None
         try:
-            return read_text(path, rel)
+            return read_text(path, rel, errors="replace" if key == "gnss" else "strict")
         except InvalidInput as exc:
             self.problem(rel, exc.field or "", exc.message)
             return None
@@ -300,6 +301,8 @@ def validate_survey(path: str | os.PathLike, gnss_gap_s: float = 10.0,
             summary["gnss_gaps"] = _report_gaps(ck, label, "time", log.time_s, gnss_gap_s)
             valid = log.fix_quality > 0
             coverage(label, log.time_s[valid], "position fixes")
+            if frames is not None and len(frames) and valid.any():
+                _check_fix_gaps(ck, label, np.sort(log.time_s[valid]), frames.time_s)
 
     if "weather" in files and (wt := ck.text(files["weather"], "weather")) is not None:
         label = files["weather"]
@@ -333,6 +336,20 @@ def validate_survey(path: str | os.PathLike, gnss_gap_s: float = 10.0,
         with ck.guard(files["markers"]):
             summary["markers"] = len(parse_markers(mk, files["markers"]))
     return rep
+
+
+def _check_fix_gaps(ck: _Checker, label: str, fix_time_s: np.ndarray,
+                    frame_time_s: np.ndarray) -> None:
+    """Frames farther from every position fix than the processing bridges are a problem:
+    where the platform was is unknown then."""
+    from clearfast_gis.geometry.gnss import STATIC_BRIDGE_S, distance_to_nearest_s
+
+    far = distance_to_nearest_s(fix_time_s, frame_time_s) > STATIC_BRIDGE_S
+    if far.any():
+        first = float(np.min(frame_time_s[far]))
+        ck.problem(label, "GGA", f"{int(np.count_nonzero(far))} frame(s) farther than "
+                   f"{STATIC_BRIDGE_S:g} s from any position fix, first at "
+                   f"{format_utc(first, 'seconds')}: the platform's position is unknown then")
 
 
 def _check_tiffs(ck: _Checker, file_col: np.ndarray, page_col: np.ndarray, label: str,

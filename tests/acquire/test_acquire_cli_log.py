@@ -47,7 +47,8 @@ def _wait_for(proc: subprocess.Popen, predicate, timeout_s: float = 20.0) -> lis
         events.append(json.loads(line))
         if predicate(events[-1]):
             return events
-    raise AssertionError(f"condition not reached; events: {events[-2:]}")
+    err = proc.stderr.read() if proc.poll() is not None and proc.stderr else ""
+    raise AssertionError(f"condition not reached; events: {events[-2:]} {err}")
 
 
 def test_all_instruments_then_sigterm_leaves_complete_files(tmp_path):

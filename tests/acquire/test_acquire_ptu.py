@@ -12,6 +12,7 @@ from hypothesis import strategies as st
 from clearfast_gis.acquire import (
     PanTiltUnit,
     PtuError,
+    PtuLimitError,
     PtuProtocolError,
     PtuReply,
     PtuTimeout,
@@ -79,9 +80,28 @@ def test_verbose_echoed_replies_are_understood(unit):
     assert "PR" not in sim.received
 
 
+def test_limits_are_queried_and_checked_before_sending(unit):
+    ptu, sim = unit
+    ptu.initialize()
+    assert ptu.limits_steps == (-3090, 3090, -2000, 604)  # from verbose PN PX TN TX replies
+    lim = ptu.limits_deg()
+    assert lim == pytest.approx((-3090 * RES_DEG, 3090 * RES_DEG, -2000 * RES_DEG,
+                                 604 * RES_DEG), abs=1e-12)
+    n = len(sim.received)
+    with pytest.raises(PtuLimitError) as err:
+        ptu.move_to(170.0, 0.0)
+    assert str(err.value) == (f"{ptu.name}: pan/tilt unit: pan 170.000 deg is outside the "
+                              "unit's range -158.914 to 158.914 deg")
+    with pytest.raises(PtuLimitError, match="tilt 31.100 deg is outside .* -102.857 to 31.063"):
+        ptu.move_to(0.0, 31.1)
+    assert len(sim.received) == n  # nothing was sent
+    assert ptu.move_to(158.9, 31.05) == pytest.approx((3090 * RES_DEG, 604 * RES_DEG))
+
+
 def test_error_reply_gives_a_clear_message(unit):
     ptu, _ = unit
     ptu.initialize()
+    ptu.limits_steps = None  # a unit that does not tell its limits: it refuses by itself
     with pytest.raises(PtuError) as err:
         ptu.move_to(170.0, 0.0)
     msg = str(err.value)

@@ -134,6 +134,11 @@ def _gnss_short(s):
     (s / "gnss.nmea").write_text("\n".join(lines[:100]) + "\n")
 
 
+def _fix_gap(s):
+    lines = (s / "gnss.nmea").read_text().splitlines()  # GGA + RMC every 10 s
+    (s / "gnss.nmea").write_text("\n".join(lines[:180] + lines[480:]) + "\n")  # 900-2400 s
+
+
 def _weather_units(s):
     p = s / "weather.dat"
     p.write_text(p.read_text().replace('"hPa"', '"kPa"'))
@@ -189,6 +194,8 @@ PROBLEMS = {
                         "throughout)"),
     "gnss_short": (_gnss_short, "gnss.nmea: position fixes from 2026-11-15T00:00:00Z to "
                                 "2026-11-15T00:08:10Z does not cover the frames"),
+    "fix_gap": (_fix_gap, "gnss.nmea: GGA: 6 frame(s) farther than 600 s from any position "
+                          "fix, first at 2026-11-15T00:26:00Z"),
     "weather_units": (_weather_units, "weather.dat: line 3: BP_hPa_Avg: unit 'kpa', expected "
                                       "'hPa'"),
     "weather_nan": (_weather_all_nan, "weather.dat: air_temp_c: all values missing (NAN)"),

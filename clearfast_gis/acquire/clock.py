@@ -1,0 +1,140 @@
+"""The survey clock: UTC from the GNSS receiver's time sentences, or the host clock.
+
+Frames, moves and waits of an acquisition are timed on one clock. In the field the receiver's
+UTC (RMC and ZDA sentences) is the reference: a laptop's clock may be minutes off and nothing
+corrects it on a site without network. :class:`GnssClock` keeps the latest few time sentences
+with the host's monotonic clock at their arrival and extrapolates::
+
+    now = max_i (utc_i + time_scale * (mono_now - mono_i))
+
+The maximum picks the sentence that arrived with the least delay (serial latency only ever
+makes a sentence late), and the result never goes backwards. ``time_scale`` is 1 for a real
+receiver; a device simulator running its scene faster than real time (``clearfast
+simulate-devices --time-scale``) announces its factor in the ports file, so that the same code
+waits 4 h of scene time in 4 h / time_scale of wall time. The accuracy is the latency of the
+NMEA sentences (typically 0.05-0.2 s), ample for a 0.5 s settle time and 2-3 s per position.
+
+:class:`HostClock` is the fallback when no receiver is connected. Both clocks offer ``now()``
+(UTC epoch seconds) and ``sleep(dt_s)`` (``dt_s`` survey seconds).
+"""
+
+from __future__ import annotations
+
+import collections
+import threading
+import time
+from collections.abc import Callable
+
+from clearfast_gis.errors import ClearfastError
+
+
+class ClockError(ClearfastError):
+    """The survey clock has no time yet (no RMC or ZDA sentence received)."""
+
+
+class SurveyClock:
+    """Base of the survey clocks: ``now()`` and waits in survey seconds.
+
+    Attributes
+    ----------
+    time_scale : float
+        Survey seconds per wall second.
+    """
+
+    time_scale = 1.0
+
+    def now(self) -> float:
+        """UTC epoch seconds."""
+        raise NotImplementedError
+
+    def sleep(self, dt_s: float) -> None:
+        """Wait ``dt_s`` survey seconds (``dt_s / time_scale`` wall seconds; nothing for
+        negative values)."""
+        time.sleep(max(0.0, float(dt_s)) / self.time_scale)
+
+    def wait(self, event: threading.Event, dt_s: float) -> bool:
+        """Wait ``dt_s`` survey seconds or until ``event`` is set; True if it was set."""
+        return event.wait(max(0.0, float(dt_s)) / self.time_scale)
+
+
+class HostClock(SurveyClock):
+    """The host's UTC clock (``time.time``), real time."""
+
+    def now(self) -> float:
+        """UTC epoch seconds."""
+        return time.time()
+
+
+class GnssClock(SurveyClock):
+    """UTC extrapolated from the receiver's latest time sentences.
+
+    Parameters
+    ----------
+    time_scale : float
+        Survey seconds per wall second: 1 for a real receiver, the simulator's factor for an
+        accelerated digital twin.
+    mono : callable
+        Host monotonic clock, seconds.
+    window : int
+        Number of recent time sentences kept.
+
+    Attributes
+    ----------
+    n_observed : int
+        Time sentences received.
+    """
+
+    def __init__(self, time_scale: float = 1.0, mono: Callable[[], float] = time.monotonic,
+                 window: int = 16) -> None:
+        if not time_scale > 0:
+            raise ValueError(f"time_scale must be positive, got {time_scale}")
+        self.time_scale = float(time_scale)
+        self._mono = mono
+        self._recent: collections.deque[tuple[float, float]] = collections.deque(maxlen=window)
+        self._last = float("-inf")
+        self._lock = threading.Lock()
+        self._ready = threading.Event()
+        self.n_observed = 0
+
+    def observe(self, utc_s: float, mono_s: float | None = None) -> None:
+        """Record a time sentence: its UTC epoch seconds and its arrival (host monotonic
+        seconds; default now). Usable as :class:`~clearfast_gis.acquire.gnss.GnssLogger`'s
+        ``on_time``."""
+        arrived = self._mono() if mono_s is None else float(mono_s)
+        with self._lock:
+            self._recent.append((float(utc_s), arrived))
+            self.n_observed += 1
+        self._ready.set()
+
+    @property
+    def ready(self) -> bool:
+        """True once a time sentence has been received."""
+        return self._ready.is_set()
+
+    def wait_ready(self, timeout_s: float) -> bool:
+        """Wait up to ``timeout_s`` wall seconds for the first time sentence."""
+        return self._ready.wait(timeout_s)
+
+    def age_s(self) -> float:
+        """Wall seconds since the latest time sentence arrived (inf before the first)."""
+        with self._lock:
+            if not self._recent:
+                return float("inf")
+            return self._mono() - self._recent[-1][1]
+
+    def now(self) -> float:
+        """UTC epoch seconds, never less than a previous reading.
+
+        Raises
+        ------
+        ClockError
+            Before the first time sentence.
+        """
+        mono = self._mono()
+        with self._lock:
+            if not self._recent:
+                raise ClockError("no UTC time from the GNSS receiver yet (no RMC or ZDA "
+                                 "sentence)", "gnss")
+            t = max(utc + self.time_scale * (mono - m) for utc, m in self._recent)
+            self._last = max(self._last, t)
+            return self._last
