@@ -7,7 +7,7 @@ import json
 import pytest
 
 from clearfast_gis.batch import plan_jobs, summary_table
-from clearfast_gis.batch.jobs import SurveyResult
+from clearfast_gis.batch.jobs import SurveyResult, worker_id
 from clearfast_gis.cli.main import cli
 from clearfast_gis.errors import ClearfastError
 from clearfast_gis.export.manifest import read_products_manifest
@@ -74,8 +74,11 @@ def test_local_batch_with_a_failing_survey(tiny_surveys, broken_survey, tmp_path
         assert ev["seconds"] > 0
     _check_products(out, ["alpha", "bravo"], few_anomalies)
     assert not (out / "charlie" / "products.json").exists()
-    # two processes did the work
-    assert len({finishes[n]["worker"] for n in ("alpha", "bravo", "charlie")}) >= 2
+    # worker processes (not this one) did the work, at most two of them; which took which
+    # survey is up to the pool (on a busy machine one may take all three)
+    workers = {finishes[n]["worker"] for n in ("alpha", "bravo", "charlie")}
+    assert 1 <= len(workers) <= 2
+    assert worker_id() not in workers
 
 
 def test_dask_batch_on_a_loopback_cluster(tiny_surveys, tmp_path, capsys, few_anomalies):
