@@ -38,6 +38,10 @@ def placement_attitude(rec: dict, model: tuple[np.ndarray, np.ndarray] | None,
     return np.tile(np.asarray(att, dtype=float), (t.size, 1))
 
 
+def _finite_or_none(v: float) -> float | None:
+    return float(v) if np.isfinite(v) else None
+
+
 def stored_model(state) -> tuple[np.ndarray, np.ndarray] | None:
     """The adjusted attitude recorded in the run state, if the adjustment ran."""
     unit = state.done(UNIT)
@@ -85,7 +89,8 @@ def adjust_survey_attitude(job, state, order: list[int], scan_records: dict[int,
                                     - placement_attitude(scan_records[s], None, times[s])))
                    > ADJUST_MIN_DEG]
         unit = {"node_times_s": node_times.tolist(), "nodes_rpy_deg": adj.nodes_rpy_deg.tolist(),
-                "rms_before_m": adj.rms_before_m, "rms_m": adj.rms_m, "n_ties": adj.n_ties,
+                "rms_before_m": _finite_or_none(adj.rms_before_m),
+                "rms_m": _finite_or_none(adj.rms_m), "n_ties": adj.n_ties,
                 "n_used": adj.n_used, "rebuild": rebuild}
         state.finish(UNIT, unit)
     model = stored_model(state)
