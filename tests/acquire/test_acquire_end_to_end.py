@@ -185,7 +185,9 @@ def test_acquired_folder_validates_and_matches_the_twin(acquired, twin):
     on, off = _switched(out, "unplug:gnss@16200+1200")
     assert 16200 <= on < 16200 + 120 and 17400 <= off < 17400 + 120
     away = (twin.start_s + on, twin.start_s + off)
-    assert not np.any((gnss.time_s > away[0] + 10) & (gnss.time_s < away[1] - 10))
+    # the switch times are the simulators' own record: on a busy machine a sentence already
+    # on its way may carry a time a little inside the window (150 s of scene time is 0.1 s)
+    assert not np.any((gnss.time_s > away[0] + 150) & (gnss.time_s < away[1] - 150))
     # the survey clock ran on without the receiver: scan 1 began meanwhile (its calibration
     # event is planned at 12:40; a busy machine may delay it by minutes of scene time)
     bb = read_blackbody_frames_table(survey / "blackbody" / "frames.csv")
