@@ -63,6 +63,10 @@ def mosaic_options(f):
                      "local solar noon).")(f)
     f = click.option("--no-atmosphere", is_flag=True,
                      help="Skip the atmospheric correction.")(f)
+    f = click.option("--kernels", type=click.Choice(["fast", "reference"]), default="fast",
+                     show_default=True,
+                     help="Run the chain on our kernels or on the reference libraries "
+                     "(scikit-image, SimpleITK, scipy, np.interp) for comparison.")(f)
     return f
 
 
@@ -97,7 +101,7 @@ def build_options(params: dict, invert: bool = True):
         raise click.UsageError("D2 must be smaller than D1")
     kw = {k: v for k, v in params.items()
           if k in ("pixel_size_m", "seam_balance", "reference_scan", "d1_m", "d2_m", "epsilon",
-                   "level", "gamma", "max_anomalies") and v is not None}
+                   "level", "gamma", "max_anomalies", "kernels") and v is not None}
     if params.get("no_coregister"):
         kw["coregister"] = False
     if params.get("no_atmosphere"):

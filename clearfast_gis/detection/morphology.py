@@ -13,6 +13,7 @@ import cv2
 import numpy as np
 from skimage.morphology import disk
 
+from clearfast_gis import kernels
 from clearfast_gis.detection.reconstruction import (
     binary_reconstruction,
     reconstruction_by_dilation,
@@ -120,6 +121,10 @@ def top_hat_by_reconstruction(image: np.ndarray, d1_px: float) -> np.ndarray:
     f = np.asarray(image)
     if f.dtype.kind != "f":
         f = f.astype(np.float32)
+    if kernels.reference():
+        from clearfast_gis.detection.reference import top_hat_reference
+
+        return top_hat_reference(f, d1_px)
     return f - reconstruction_by_dilation(erode_disk(f, d1_px), f)
 
 
@@ -132,6 +137,10 @@ def bottom_hat_by_reconstruction(image: np.ndarray, d1_px: float) -> np.ndarray:
     f = np.asarray(image)
     if f.dtype.kind != "f":
         f = f.astype(np.float32)
+    if kernels.reference():
+        from clearfast_gis.detection.reference import bottom_hat_reference
+
+        return bottom_hat_reference(f, d1_px)
     return reconstruction_by_erosion(dilate_disk(f, d1_px), f) - f
 
 
@@ -150,4 +159,8 @@ def binary_opening_by_reconstruction(binary: np.ndarray, d2_px: float) -> np.nda
     g = np.asarray(binary, dtype=bool)
     if not g.any():
         return g.copy()
+    if kernels.reference():
+        from clearfast_gis.detection.reference import binary_opening_reference
+
+        return binary_opening_reference(g, d2_px)
     return binary_reconstruction(erode_disk(g, d2_px), g)

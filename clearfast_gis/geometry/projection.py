@@ -16,6 +16,7 @@ import numpy as np
 import shapely
 from shapely.geometry import Polygon
 
+from clearfast_gis import kernels
 from clearfast_gis.geometry.cameras import Camera, EquiangularCamera, PinholeCamera
 from clearfast_gis.geometry.grid import GroundGrid
 from clearfast_gis.geometry.pose import CameraPose
@@ -98,6 +99,8 @@ def ground_maps(camera: Camera, pose: CameraPose, grid: GroundGrid,
         (behind the camera, beyond the horizon or outside the pixel-centre hull
         ``[0, W-1] x [0, H-1]``, so bilinear interpolation never reads outside the frame).
     """
+    if kernels.reference():
+        return reference_maps(camera, pose, grid, z)
     map_x = np.full(grid.shape, NOT_SEEN, dtype=np.float32)
     map_y = np.full(grid.shape, NOT_SEEN, dtype=np.float32)
     window = _seen_window(camera, pose, grid, z)
@@ -121,6 +124,18 @@ def ground_maps(camera: Camera, pose: CameraPose, grid: GroundGrid,
     else:
         raise TypeError(f"unknown camera model {type(camera).__name__}")
     return map_x, map_y
+
+
+def reference_maps(camera: Camera, pose: CameraPose, grid: GroundGrid,
+                   z: float = 0.0) -> tuple[np.ndarray, np.ndarray]:
+    """:func:`ground_maps` computed with the camera's numpy ``project`` for every cell (the
+    reference of ``--kernels reference``); same shapes and conventions."""
+    x, y = grid.cell_centres()
+    uv = camera.project(np.column_stack([x.ravel(), y.ravel(), np.full(x.size, float(z))]),
+                        pose)
+    uv[~camera.in_frame(uv)] = NOT_SEEN
+    return (uv[:, 0].reshape(grid.shape).astype(np.float32),
+            uv[:, 1].reshape(grid.shape).astype(np.float32))
 
 
 def _seen_window(camera: Camera, pose: CameraPose, grid: GroundGrid,

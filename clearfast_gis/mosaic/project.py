@@ -9,6 +9,7 @@ import cv2
 import numpy as np
 from shapely.geometry import Polygon
 
+from clearfast_gis import kernels
 from clearfast_gis.geometry.grid import GroundGrid
 from clearfast_gis.geometry.pose import CameraPose
 from clearfast_gis.geometry.projection import frame_footprint, ground_maps, incidence_angle_map
@@ -99,6 +100,38 @@ def antialias_sigma_px(camera, pose: CameraPose, cell_m: float) -> float:
     return 0.5 * ratio if ratio > 1.2 else 0.0
 
 
+def resample(band: np.ndarray, map_x: np.ndarray, map_y: np.ndarray, sigma_px: float
+             ) -> np.ndarray:
+    """Bilinear samples of a frame at source-pixel maps, after a Gaussian low-pass.
+
+    Parameters
+    ----------
+    band : float32 (H, W)
+        One band of a frame, NaN = invalid.
+    map_x, map_y : float32 (h, w)
+        Source column and row of each cell (:func:`ground_maps`; -1 = not seen).
+    sigma_px : float
+        Gaussian sigma of the anti-alias filter, frame pixels (0: none).
+
+    Returns
+    -------
+    float32 (h, w)
+        NaN where the map points outside the frame. ``cv2`` (fast kernels) or scipy's
+        ``gaussian_filter`` and ``map_coordinates`` (``--kernels reference``).
+    """
+    if kernels.reference():
+        from scipy import ndimage
+
+        if sigma_px > 0:
+            band = ndimage.gaussian_filter(band, sigma_px, mode="nearest", truncate=3.0)
+        return ndimage.map_coordinates(band, [map_y, map_x], order=1, mode="constant",
+                                       cval=np.nan, prefilter=False).astype(np.float32)
+    if sigma_px > 0:
+        band = cv2.GaussianBlur(band, (0, 0), sigma_px, borderType=cv2.BORDER_REPLICATE)
+    return cv2.remap(band, map_x, map_y, interpolation=cv2.INTER_LINEAR,
+                     borderMode=cv2.BORDER_CONSTANT, borderValue=float("nan"))
+
+
 def project_frame(frame: np.ndarray, camera, pose: CameraPose, grid: GroundGrid,
                   max_incidence_deg: float = 85.0, antialias: bool = True
                   ) -> ProjectedFrame | None:
@@ -135,12 +168,8 @@ def project_frame(frame: np.ndarray, camera, pose: CameraPose, grid: GroundGrid,
     values = np.empty((stack.shape[0], *sub.shape), dtype=np.float32)
     sigma = antialias_sigma_px(camera, pose, grid.pixel_size) if antialias else 0.0
     for b in range(stack.shape[0]):
-        band = np.ascontiguousarray(stack[b], dtype=np.float32)
-        if sigma > 0:
-            band = cv2.GaussianBlur(band, (0, 0), sigma, borderType=cv2.BORDER_REPLICATE)
-        values[b] = cv2.remap(band, map_x, map_y,
-                              interpolation=cv2.INTER_LINEAR, borderMode=cv2.BORDER_CONSTANT,
-                              borderValue=float("nan"))
+        values[b] = resample(np.ascontiguousarray(stack[b], dtype=np.float32), map_x, map_y,
+                             sigma)
     incidence = incidence_angle_map(pose, sub)
     keep = seen & (incidence <= max_incidence_deg) & np.all(np.isfinite(values), axis=0)
     values[:, ~keep] = np.nan

@@ -8,7 +8,7 @@ from dataclasses import asdict, dataclass, fields
 
 MOSAIC_PARAMETERS = ("pixel_size_m", "coregister", "search_m", "attitude_samples",
                      "adjust_attitude", "frame_refine", "max_shift_m", "max_angle_deg",
-                     "seam_balance", "reference_scan", "atmosphere")
+                     "seam_balance", "reference_scan", "atmosphere", "kernels")
 """The parameters that change the mosaics (the others only change the anomalies)."""
 
 
@@ -49,6 +49,9 @@ class ProcessOptions:
         contrast).
     atmosphere : bool
         Atmospheric correction (Eq. 4).
+    kernels : {"fast", "reference"}
+        Our kernels, or the reference libraries they are checked against
+        (:mod:`clearfast_gis.kernels`); for side-by-side benchmarks.
     d1_m, d2_m : float
         Detector structuring elements: D1 larger than the largest expected mine, D2 < D1
         removes smaller clutter (paper §4), metres.
@@ -86,6 +89,7 @@ class ProcessOptions:
     seam_balance: bool = False
     reference_scan: int | None = None
     atmosphere: bool = True
+    kernels: str = "fast"
     d1_m: float = 0.5
     d2_m: float = 0.06
     epsilon: float = 0.01

@@ -10,7 +10,7 @@ from pathlib import Path
 
 import numpy as np
 
-from clearfast_gis import __version__
+from clearfast_gis import __version__, kernels
 from clearfast_gis.atomic import atomic_path
 from clearfast_gis.errors import InvalidInput
 from clearfast_gis.export.cog import band_description, read_mosaic, write_cog
@@ -52,6 +52,7 @@ from clearfast_gis.pipeline.frames import (
 from clearfast_gis.pipeline.options import MOSAIC_PARAMETERS, ProcessOptions
 from clearfast_gis.pipeline.products import base_manifest as _base_manifest
 from clearfast_gis.pipeline.products import write_anomaly_products, write_footprint_geojson
+from clearfast_gis.pipeline.resources import StageMeter, cpu_seconds
 from clearfast_gis.pipeline.state import RunState
 from clearfast_gis.progress import NULL_PROGRESS, Progress
 from clearfast_gis.radiometry.stage import calibration_events, weather_at
@@ -331,6 +332,55 @@ class _ScanJob:
         return rec
 
 
+def _scan_mosaics(job: _ScanJob, order: list[int], ref: int
+                  ) -> tuple[dict[int, dict], dict[int, tuple]]:
+    """Every scan's mosaic in time order (each fitted against the previous scan's and the
+    reference scan's), then the scans before the first marker-anchored one again, backwards;
+    finished scans of an earlier run are kept.
+
+    Returns
+    -------
+    scan_records : dict scan -> run-state record
+    attitudes : dict scan -> (roll, pitch, yaw) degrees of the per-scan fit
+    """
+    state, progress, options = job.state, job.progress, job.options
+    n_pos = len(job.ctx.survey.positions)
+    progress.start("mosaics", len(order) * n_pos)
+    attitudes: dict[int, tuple] = {}
+    scan_records: dict[int, dict] = {}
+    previous = reference = None
+    model = stored_model(state)
+    for scan in order:
+        rec = state.done(f"scan_{scan:03d}")
+        if rec is not None:
+            progress.advance(n_pos, scan=scan, resumed=True)
+        else:
+            refs = [r for r in (previous, reference) if r is not None]
+            rec = job.build(scan, refs, _neighbour(scan, attitudes))
+        if rec.get("attitude"):
+            attitudes[scan] = tuple(rec["attitude"]["attitude_rpy_deg"])
+        scan_records[scan] = dict(rec)
+        previous = job.reference(scan, rec, model)
+        if scan == ref:
+            reference = previous
+    # the scans before the first one anchored by markers inherit its placement backwards
+    anchored = [s for s in order if (scan_records[s].get("attitude") or {})
+                .get("n_marker_ties", 0) >= 2]
+    if options.coregister and anchored:
+        for k in range(order.index(anchored[0]) - 1, -1, -1):
+            scan, nxt = order[k], order[k + 1]
+            if scan_records[scan].get("refit_from") == nxt:
+                continue
+            refs = [job.reference(nxt, scan_records[nxt], None)]
+            if reference is not None and nxt != ref:
+                refs.append(reference)
+            rec = job.build(scan, refs, attitudes[scan], refit_from=nxt)
+            attitudes[scan] = tuple(rec["attitude"]["attitude_rpy_deg"])
+            scan_records[scan] = dict(rec)
+    progress.close()
+    return scan_records, attitudes
+
+
 def process_survey(survey_path: str | Path, products: str | Path,
                    options: ProcessOptions | None = None, resume: bool = True,
                    progress: Progress = NULL_PROGRESS, until: str = "products",
@@ -362,13 +412,19 @@ def process_survey(survey_path: str | Path, products: str | Path,
     if until not in ("products", "mosaics"):
         raise ValueError(f"unknown stage {until!r}")
     options = ProcessOptions() if options is None else options
-    t_all = time.perf_counter()
-    products = Path(products)
-    timings: dict[str, float] = {}
-    t0 = time.perf_counter()
-    ctx, epsg, report = open_context(survey_path, progress)
+    with kernels.use(options.kernels):
+        return _process(survey_path, Path(products), options, resume, progress, until,
+                        redo_anomalies)
+
+
+def _process(survey_path: str | Path, products: Path, options: ProcessOptions, resume: bool,
+             progress: Progress, until: str, redo_anomalies: bool) -> dict:
+    """:func:`process_survey` once the kernel set is chosen."""
+    t_all, cpu_all = time.perf_counter(), cpu_seconds()
+    meter = StageMeter()
+    with meter.stage("read_and_validate"):
+        ctx, epsg, report = open_context(survey_path, progress)
     survey = ctx.survey
-    timings["read_and_validate"] = time.perf_counter() - t0
     key = _input_key(survey, options)
     state = RunState(products, key if resume else key + f"-fresh-{time.time_ns()}")
     if not resume:
@@ -376,66 +432,32 @@ def process_survey(survey_path: str | Path, products: str | Path,
     ref = _reference_scan(survey, options)
     order = sorted(int(x) for x in survey.scans)
 
-    t0 = time.perf_counter()
-    ctx.band_offsets = _band_offsets(ctx, state, ref, progress)
-    timings["band_coregistration"] = time.perf_counter() - t0
+    with meter.stage("band_coregistration"):
+        ctx.band_offsets = _band_offsets(ctx, state, ref, progress)
 
     pixel = _pixel_size(survey, options)
     grid = _grid(ctx, epsg, pixel, ref)
     descriptions = [band_description(b.name, b.lambda_min_um, b.lambda_max_um)
                     for b in survey.bands]
     air_at = _air_function(ctx)
-    t0 = time.perf_counter()
-    n_pos = len(survey.positions)
-    progress.start("mosaics", len(order) * n_pos)
-    attitudes: dict[int, tuple] = {}
     _, marker_xy = _survey_markers(survey, epsg)
-    scan_records: dict[int, dict] = {}
     job = _ScanJob(ctx, grid, epsg, descriptions, air_at, marker_xy, options, products, state,
                    progress)
-    previous = reference = None
-    model = stored_model(state)
-    for scan in order:
-        rec = state.done(f"scan_{scan:03d}")
-        if rec is not None:
-            progress.advance(n_pos, scan=scan, resumed=True)
-        else:
-            refs = [r for r in (previous, reference) if r is not None]
-            rec = job.build(scan, refs, _neighbour(scan, attitudes))
-        if rec.get("attitude"):
-            attitudes[scan] = tuple(rec["attitude"]["attitude_rpy_deg"])
-        scan_records[scan] = dict(rec)
-        previous = job.reference(scan, rec, model)
-        if scan == ref:
-            reference = previous
-    # the scans before the first one anchored by markers inherit its placement backwards
-    anchored = [s for s in order if (scan_records[s].get("attitude") or {})
-                .get("n_marker_ties", 0) >= 2]
-    if options.coregister and anchored:
-        for k in range(order.index(anchored[0]) - 1, -1, -1):
-            scan, nxt = order[k], order[k + 1]
-            if scan_records[scan].get("refit_from") == nxt:
-                continue
-            refs = [job.reference(nxt, scan_records[nxt], None)]
-            if reference is not None and nxt != ref:
-                refs.append(reference)
-            rec = job.build(scan, refs, attitudes[scan], refit_from=nxt)
-            attitudes[scan] = tuple(rec["attitude"]["attitude_rpy_deg"])
-            scan_records[scan] = dict(rec)
-    progress.close()
+    with meter.stage("mosaics"):
+        scan_records, attitudes = _scan_mosaics(job, order, ref)
     adjustment = None
     if options.coregister and options.adjust_attitude:
-        adjustment = adjust_survey_attitude(job, state, order, scan_records, attitudes,
-                                            progress)
-    _temporal_residuals(products, scan_records, ref, options.coregister)
-    timings["mosaics"] = time.perf_counter() - t0
-
-    valid = None
-    for scan in sorted(scan_records):
-        m = read_mosaic(products / mosaic_rel(scan)).bands_c[0]
-        valid = np.isfinite(m) if valid is None else valid | np.isfinite(m)
-    write_footprint_geojson(products / "footprint.geojson", valid, grid.transform, epsg,
-                            survey.manifest["survey_id"])
+        with meter.stage("attitude_adjustment"):
+            adjustment = adjust_survey_attitude(job, state, order, scan_records, attitudes,
+                                                progress)
+    with meter.stage("residuals_and_footprint"):
+        _temporal_residuals(products, scan_records, ref, options.coregister)
+        valid = None
+        for scan in sorted(scan_records):
+            m = read_mosaic(products / mosaic_rel(scan)).bands_c[0]
+            valid = np.isfinite(m) if valid is None else valid | np.isfinite(m)
+        write_footprint_geojson(products / "footprint.geojson", valid, grid.transform, epsg,
+                                survey.manifest["survey_id"])
     if until == "mosaics":
         manifest = _base_manifest(survey, epsg, options, scan_records,
                                   _fix_quality_summary(ctx))
@@ -444,10 +466,13 @@ def process_survey(survey_path: str | Path, products: str | Path,
         if redo_anomalies:
             state.drop("anomalies")
         manifest = _anomaly_stage(ctx, survey, products, options, state, scan_records, epsg,
-                                  grid, report, timings, progress)
+                                  grid, report, meter, progress)
     manifest["attitude_adjustment"] = adjustment
-    timings["total"] = time.perf_counter() - t_all
-    manifest["timings_s"] = {k: round(v, 3) for k, v in timings.items()}
+    total_wall = time.perf_counter() - t_all
+    manifest["timings_s"] = {k: round(v["wall_s"], 3) for k, v in meter.stages.items()} \
+        | {"total": round(total_wall, 3)}
+    manifest["resources"] = meter.summary(total_wall, cpu_seconds() - cpu_all) \
+        | {"kernels": options.kernels}
     write_products_manifest(products, manifest)
     return manifest
 
@@ -477,7 +502,7 @@ def _mosaics_digest(state: RunState, scans: list[int]) -> str:
 
 
 def _anomaly_stage(ctx, survey, products: Path, options: ProcessOptions, state: RunState,
-                   scan_records: dict[int, dict], epsg: int, grid, report, timings: dict,
+                   scan_records: dict[int, dict], epsg: int, grid, report, meter: StageMeter,
                    progress: Progress) -> dict:
     from clearfast_gis.survey import read_soil_log
     from clearfast_gis.thermal import forcing_from_weather
@@ -493,40 +518,39 @@ def _anomaly_stage(ctx, survey, products: Path, options: ProcessOptions, state: 
     scans = sorted(scan_records)
     times = np.array([scan_records[s]["time_s"] for s in scans])
     lon = float(survey.manifest["site"]["longitude_deg"])
-    t0 = time.perf_counter()
-    stack, first = _load_stack(products, scans)
-    labels, feats = detect_on_mosaics(stack, times, first.transform, grid.pixel_size, lon,
-                                      options.d1_m, options.d2_m, options.epsilon,
-                                      options.level, options.gamma, options.max_anomalies,
-                                      level_fraction=options.level_fraction,
-                                      gamma_fraction=options.gamma_fraction,
-                                      progress=progress)
-    marker_ids, marker_xy = _survey_markers(survey, epsg)
-    feats, _ = split_markers(feats, marker_ids, marker_xy)
-    marker_matches = markers_in_mosaics(stack, grid, marker_ids, marker_xy)
-    timings["detection"] = time.perf_counter() - t0
-    t0 = time.perf_counter()
+    with meter.stage("detection"):
+        stack, first = _load_stack(products, scans)
+        labels, feats = detect_on_mosaics(stack, times, first.transform, grid.pixel_size, lon,
+                                          options.d1_m, options.d2_m, options.epsilon,
+                                          options.level, options.gamma, options.max_anomalies,
+                                          level_fraction=options.level_fraction,
+                                          gamma_fraction=options.gamma_fraction,
+                                          progress=progress)
+        marker_ids, marker_xy = _survey_markers(survey, epsg)
+        feats, _ = split_markers(feats, marker_ids, marker_xy)
+        marker_matches = markers_in_mosaics(stack, grid, marker_ids, marker_xy)
     notes: list[str] = []
     inversions = {}
     alpha = sigma = math.nan
-    if options.invert and feats:
-        forcing = forcing_from_weather(ctx.weather)
-        soil_log = read_soil_log(survey.path("soil"), survey.label("soil"))
-        background = np.nanmedian(np.where(labels[None] > 0, np.nan, stack[:, 0]), axis=(1, 2))
-        soil, alpha, sigma = site_soil(soil_log, forcing, times, background)
-        inversions = characterise(feats, times, forcing, soil, progress=progress)
-    elif not options.invert:
-        notes.append("thermal characterisation switched off")
-    timings["characterisation"] = time.perf_counter() - t0
+    with meter.stage("characterisation"):
+        if options.invert and feats:
+            forcing = forcing_from_weather(ctx.weather)
+            soil_log = read_soil_log(survey.path("soil"), survey.label("soil"))
+            background = np.nanmedian(np.where(labels[None] > 0, np.nan, stack[:, 0]),
+                                      axis=(1, 2))
+            soil, alpha, sigma = site_soil(soil_log, forcing, times, background)
+            inversions = characterise(feats, times, forcing, soil, progress=progress)
+        elif not options.invert:
+            notes.append("thermal characterisation switched off")
     anomalies = AnomalySet(labels, feats, inversions, alpha, sigma, notes, marker_matches)
     fixq = _fix_quality_summary(ctx)
     code = survey.manifest["survey_id"]
     records = suspect_records(anomalies, times, lon, fixq["worst_during_frames"], code)
-    t0 = time.perf_counter()
-    manifest = write_anomaly_products(products, ctx, survey, anomalies, records, stack, times,
-                                      first.transform, epsg, scan_records, report, options,
-                                      fixq, timings)
-    timings["products"] = time.perf_counter() - t0
+    with meter.stage("products"):
+        timings = {k: v["wall_s"] for k, v in meter.stages.items()}
+        manifest = write_anomaly_products(products, ctx, survey, anomalies, records, stack,
+                                          times, first.transform, epsg, scan_records, report,
+                                          options, fixq, timings)
     state.finish("anomalies", {"n": len(records), "key": options.detection_key(),
                                "mosaics": mosaics},
                  ["anomalies.gpkg", "report.html"])

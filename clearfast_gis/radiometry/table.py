@@ -20,6 +20,7 @@ import numba
 import numpy as np
 from numpy.typing import ArrayLike
 
+from clearfast_gis import kernels
 from clearfast_gis.errors import InvalidInput
 from clearfast_gis.radiometry.planck import (
     band_radiance,
@@ -177,9 +178,12 @@ class BandTable:
         -------
         ndarray
             Apparent temperature, kelvin, shape of ``radiance``; NaN for NaN input or a
-            radiance outside the table's temperature range.
+            radiance outside the table's temperature range. With ``--kernels reference``:
+            :func:`apparent_temperature_paper` (the paper's 0.1 K table and ``np.interp``).
         """
         r = np.asarray(radiance)
+        if kernels.reference():
+            return apparent_temperature_paper(r, self).astype(dtype)
         if r.dtype not in (np.float32, np.float64):
             r = r.astype(np.float64)
         flat = np.ascontiguousarray(r).ravel()

@@ -21,6 +21,7 @@ from dataclasses import dataclass, replace
 import cv2
 import numpy as np
 
+from clearfast_gis import kernels
 from clearfast_gis.errors import InvalidInput
 from clearfast_gis.registration._kernels import (
     N_PARAMS,
@@ -291,6 +292,9 @@ def register_conformal(
     shift_bound = (float(max_shift_px) if max_shift_px is not None
                    else float(max(hf, wf) + max(m0.shape)))
 
+    if kernels.reference():
+        return _reference(f0, m0, base, init is None, scale, max_shift_px, shift_bound,
+                          max_angle_rad, bins, max_samples, smooth_px, min_overlap, min_metric)
     levels = min(n_levels_for(f0.shape), n_levels_for(m0.shape))
     fpyr = masked_pyramid(f0, levels)
     mpyr = masked_pyramid(m0, levels)
@@ -353,6 +357,30 @@ def register_conformal(
         and nmi >= min_metric
         and not bounds.at_bound(vec, float(tol.min()))
     )
+    return replace(result, metric=float(mi), n_samples=int(n_overlap),
+                   converged=bool(converged))
+
+
+def _reference(f0: np.ndarray, m0: np.ndarray, base: ConformalTransform, search: bool,
+               scale: bool, max_shift_px: float | None, shift_bound: float,
+               max_angle_rad: float, bins: int, max_samples: int, smooth_px: float,
+               min_overlap: float, min_metric: float) -> ConformalTransform:
+    """:func:`register_conformal` by SimpleITK (``--kernels reference``), judged by the same
+    acceptance test (overlap, normalised MI at the finest level, bounds)."""
+    from clearfast_gis.registration.reference import register_reference
+
+    result, _ = register_reference(f0, m0, base, search, scale, max_shift_px,
+                                   math.degrees(max_angle_rad))
+    fl, ml = masked_gaussian(f0, smooth_px), masked_gaussian(m0, smooth_px)
+    problem = _level_problem(fl, ml, _bin_scale(f0[np.isfinite(f0)]),
+                             _bin_scale(m0[np.isfinite(m0)]), bins, max_samples, 1.0)
+    mi, n_overlap, _ = problem.evaluate(result, False)
+    inside = (max(abs(result.tx_px - base.tx_px), abs(result.ty_px - base.ty_px))
+              <= shift_bound
+              and abs(result.angle_rad - base.angle_rad) <= max_angle_rad + 1e-9
+              and abs(math.log(result.scale)) <= MAX_LOG_SCALE)
+    converged = (n_overlap >= max(64, min_overlap * problem.us.size)
+                 and _normalised_mi(mi, problem.hist) >= min_metric and inside)
     return replace(result, metric=float(mi), n_samples=int(n_overlap),
                    converged=bool(converged))
 

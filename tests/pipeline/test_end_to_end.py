@@ -178,3 +178,17 @@ def test_drifting_lift_is_followed(demo_drift_mosaics):
     # demo's 4-hour steps leave them a little worse than the rest (the 48-scan trial is not)
     assert max(rms) < 0.4, rms
     assert np.median(rms) < 0.2, rms
+
+
+def test_resources_per_stage(demo_products):
+    """products.json records wall time, CPU time and peak memory of every stage."""
+    res = json.loads((demo_products / "products.json").read_text())["resources"]
+    assert res["kernels"] == "fast"
+    for st in ("read_and_validate", "band_coregistration", "mosaics", "detection",
+               "characterisation", "products"):
+        r = res["stages"][st]
+        assert r["wall_s"] > 0 and r["cpu_s"] > 0, st
+        assert 50 < r["peak_rss_mb"] < 4096, st  # MiB
+    walls = sum(r["wall_s"] for r in res["stages"].values())
+    assert walls <= res["total"]["wall_s"] * 1.001
+    assert res["total"]["peak_rss_mb"] == max(r["peak_rss_mb"] for r in res["stages"].values())

@@ -1,0 +1,60 @@
+"""Reference (scikit-image) versions of the detector's morphology, for ``--kernels reference``.
+
+Same conventions as :mod:`clearfast_gis.detection.morphology`: NaN (no-data) pixels are
+ignored by the erosion/dilation and are walls for the reconstruction; pixels outside the image
+are ignored (``mode="max"`` / ``"min"``).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from skimage.morphology import dilation, disk, erosion, reconstruction
+
+from clearfast_gis.detection.morphology import disk_radius_px
+
+
+def _walled(seed: np.ndarray, mask: np.ndarray, nodata: np.ndarray, wall: float
+            ) -> tuple[np.ndarray, np.ndarray]:
+    """Seed and mask with the no-data pixels set to ``wall`` (the value that propagates
+    nothing)."""
+    return np.where(nodata, wall, seed), np.where(nodata, wall, mask)
+
+
+def top_hat_reference(image: np.ndarray, d1_px: float) -> np.ndarray:
+    """``f - R_B(f eroded by D1 | f)`` with :func:`skimage.morphology.erosion` and
+    :func:`skimage.morphology.reconstruction`; float (H, W), NaN on no-data."""
+    f = np.asarray(image)
+    f = f if f.dtype.kind == "f" else f.astype(np.float32)
+    nodata = np.isnan(f)
+    eroded = erosion(np.where(nodata, np.inf, f), disk(disk_radius_px(d1_px)), mode="max")
+    low = float(np.nanmin(f)) - 1.0 if not nodata.all() else 0.0
+    seed, mask = _walled(eroded, f, nodata, low)
+    rec = reconstruction(seed, mask, method="dilation").astype(f.dtype)
+    out = f - rec
+    out[nodata] = np.nan
+    return out
+
+
+def bottom_hat_reference(image: np.ndarray, d1_px: float) -> np.ndarray:
+    """``R*_B(f dilated by D1 | f) - f`` (dual of :func:`top_hat_reference`)."""
+    f = np.asarray(image)
+    f = f if f.dtype.kind == "f" else f.astype(np.float32)
+    nodata = np.isnan(f)
+    dilated = dilation(np.where(nodata, -np.inf, f), disk(disk_radius_px(d1_px)), mode="min")
+    high = float(np.nanmax(f)) + 1.0 if not nodata.all() else 0.0
+    seed, mask = _walled(dilated, f, nodata, high)
+    rec = reconstruction(seed, mask, method="erosion").astype(f.dtype)
+    out = rec - f
+    out[nodata] = np.nan
+    return out
+
+
+def binary_opening_reference(binary: np.ndarray, d2_px: float) -> np.ndarray:
+    """Binary opening by reconstruction with scikit-image: components of ``binary`` that
+    contain a disk of diameter ``d2_px``, whole (8-connectivity); bool (H, W)."""
+    g = np.asarray(binary, dtype=bool)
+    if not g.any():
+        return g.copy()
+    seed = erosion(g.view(np.uint8), disk(disk_radius_px(d2_px)), mode="max")
+    return reconstruction(seed, g.view(np.uint8), method="dilation",
+                          footprint=np.ones((3, 3), bool)).astype(bool)
