@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import json
 import sys
+import threading
 import time
 from typing import TextIO
 
@@ -34,6 +35,7 @@ class Progress:
         self._total = 0
         self._done = 0
         self._t0 = time.perf_counter()
+        self._lock = threading.RLock()  # stages advance from helper threads too
 
     def start(self, stage: str, total: int) -> None:
         """Begin a stage of ``total`` steps."""
@@ -47,11 +49,12 @@ class Progress:
         self._emit(event="start")
 
     def advance(self, n: int = 1, **info: object) -> None:
-        """Mark ``n`` more steps done; ``info`` is added to the JSON line."""
-        self._done += n
-        if self._bar is not None:
-            self._bar.update(n)
-        self._emit(event="progress", **info)
+        """Mark ``n`` more steps done; ``info`` is added to the JSON line. Thread-safe."""
+        with self._lock:
+            self._done += n
+            if self._bar is not None:
+                self._bar.update(n)
+            self._emit(event="progress", **info)
 
     def message(self, text: str) -> None:
         """A free-text note (shown above the bar, or as a JSON ``message`` line)."""

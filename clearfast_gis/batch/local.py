@@ -9,19 +9,23 @@ events through a queue that a thread of the parent reads.
 from __future__ import annotations
 
 import multiprocessing
+import os
 import queue
 import threading
 from collections.abc import Callable, Sequence
 from concurrent.futures import ProcessPoolExecutor, as_completed
 
 from clearfast_gis.batch.jobs import SurveyJob, SurveyResult, convert_survey
+from clearfast_gis.parallel import n_threads
 
 _EVENTS = None
 
 
-def _init_worker(events) -> None:
+def _init_worker(events, threads: int = 0) -> None:
     global _EVENTS
     _EVENTS = events
+    if threads:  # share the cores between the worker processes (clearfast_gis.parallel)
+        os.environ.setdefault("CLEARFAST_THREADS", str(threads))
 
 
 def _emit(event: dict) -> None:
@@ -71,7 +75,8 @@ def run_local(jobs: Sequence[SurveyJob], workers: int, options=None, resume: boo
     results: dict[int, SurveyResult] = {}
     try:
         with ProcessPoolExecutor(max_workers=max(1, int(workers)), mp_context=ctx,
-                                 initializer=_init_worker, initargs=(events,)) as pool:
+                                 initializer=_init_worker,
+                                 initargs=(events, max(1, n_threads() // workers))) as pool:
             futures = {pool.submit(_task, job, options, resume): i for i, job in enumerate(jobs)}
             for fut in as_completed(futures):
                 i = futures[fut]

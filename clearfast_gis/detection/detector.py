@@ -31,6 +31,7 @@ from clearfast_gis.detection.morphology import (
 )
 from clearfast_gis.detection.reconstruction import binary_reconstruction
 from clearfast_gis.detection.stretch import stretch_threshold
+from clearfast_gis.parallel import thread_map
 from clearfast_gis.progress import NULL_PROGRESS, Progress
 
 __all__ = ["DetectionResult", "detect_anomalies", "as_image_stack"]
@@ -148,13 +149,16 @@ def detect_anomalies(
     g = {p: np.zeros((k, *shape), dtype=bool) for p in ("hot", "cold")}
     o = {p: np.zeros((k, *shape), dtype=bool) for p in ("hot", "cold")}
     progress.start("detect", k)
-    for i in range(k):
+
+    def one_image(i: int) -> None:
         for p, hat in (("hot", top_hat_by_reconstruction),
                        ("cold", bottom_hat_by_reconstruction)):
             if want[p]:
                 g[p][i] = stretch_threshold(hat(images[i], d1_px), epsilon)
                 o[p][i] = binary_opening_by_reconstruction(g[p][i], d2_px)
         progress.advance()
+
+    thread_map(one_image, range(k))
     progress.close()
     votes = np.sum(o["hot"] | o["cold"], axis=0, dtype=np.int32)
     m = votes >= level
@@ -163,8 +167,10 @@ def detect_anomalies(
     for p in ("hot", "cold"):
         li = np.zeros((k, *shape), dtype=bool)
         if want[p] and m.any():
-            for i in range(k):
+            def lit(i: int, p: str = p, li: np.ndarray = li) -> None:
                 li[i] = binary_reconstruction(m, g[p][i])
+
+            thread_map(lit, range(k))
         if gamma is None:
             out[p] = li.any(axis=0)
         else:

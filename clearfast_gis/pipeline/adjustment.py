@@ -96,6 +96,7 @@ def adjust_survey_attitude(job, state, order: list[int], scan_records: dict[int,
     model = stored_model(state)
     todo = [s for s in unit["rebuild"] if not scan_records[s].get("adjusted")]
     if todo:
+        job.plan(todo)
         progress.start("attitude adjustment", len(todo))
         for s in todo:
             scan_records[s] = dict(job.build(s, [], attitudes.get(s, (0.0, 0.0, 0.0)),

@@ -128,7 +128,8 @@ def scan_frames(ctx: SurveyContext, scan: int, air_at, atmosphere: bool = True,
         block_pos = keep[idx]
         block_poses = poses[idx]
         paths = np.stack([path_length_map(ctx.camera, p) for p in block_poses])
-        temps = []
+        stack = np.empty((block_pos.size, n_bands, ctx.camera.height, ctx.camera.width),
+                         dtype=np.float32)  # (P, B, H, W)
         for b in range(n_bands):
             order = np.searchsorted(pos_all[b], block_pos)
             if np.any(pos_all[b][order] != block_pos):
@@ -141,13 +142,13 @@ def scan_frames(ctx: SurveyContext, scan: int, air_at, atmosphere: bool = True,
             use_atm = atmosphere and has_transmittance_model(band.lambda_min_um,
                                                              band.lambda_max_um)
             air: AirState = air_at(times)
+            dst = stack[:, b]
             t_k = apparent_temperature_frames(raw, times, b, table, ctx.events, air,
                                               path_length_m=paths, atmosphere=use_atm)
-            t_c = t_k - np.float32(ZERO_CELSIUS_K)
+            np.subtract(t_k, np.float32(ZERO_CELSIUS_K), out=dst)
             if b > 0 and not _is_identity(ctx.band_offsets[b]):
-                t_c = np.stack([warp_conformal(f, ctx.band_offsets[b], f.shape) for f in t_c])
-            temps.append(t_c.astype(np.float32))
-        stack = np.stack(temps, axis=1)  # (P, B, H, W)
+                for k in range(dst.shape[0]):
+                    dst[k] = warp_conformal(dst[k], ctx.band_offsets[b], dst[k].shape)
         for k, (pos, pose) in enumerate(zip(block_pos, block_poses, strict=True)):
             yield FrameInput(int(pos), stack[k], pose)
 

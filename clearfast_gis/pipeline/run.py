@@ -6,6 +6,7 @@ import dataclasses
 import json
 import math
 import time
+from concurrent.futures import Future, ThreadPoolExecutor
 from pathlib import Path
 
 import numpy as np
@@ -23,6 +24,7 @@ from clearfast_gis.geometry.projection import frame_footprint
 from clearfast_gis.mosaic import build_scan_mosaic, mosaic_grid, temporal_residual
 from clearfast_gis.mosaic.attitude import with_attitude
 from clearfast_gis.mosaic.build import FrameCorrection
+from clearfast_gis.parallel import thread_map
 from clearfast_gis.pipeline.adjustment import (
     adjust_survey_attitude,
     placement_attitude,
@@ -167,14 +169,17 @@ def _temporal_residuals(products: Path, scan_records: dict[int, dict], ref: int,
     stored in ``scan_records[scan]["residual_px"]`` (None for the reference itself or when it
     cannot be measured)."""
     reference = read_mosaic(products / mosaic_rel(ref)).bands_c[0] if measure else None
-    for scan, rec in scan_records.items():
-        rec["residual_px"] = None
+
+    def residual(scan: int) -> float | None:
         if reference is None or scan == ref:
-            continue
+            return None
         r = temporal_residual(reference, read_mosaic(products / mosaic_rel(scan)).bands_c[0])
-        rec["residual_px"] = None if math.isnan(r.shift_px) else r.shift_px
-    for rec in scan_records.values():
-        rec["reference_scan"] = ref
+        return None if math.isnan(r.shift_px) else r.shift_px
+
+    scans = list(scan_records)
+    for scan, value in zip(scans, thread_map(residual, scans), strict=True):
+        scan_records[scan]["residual_px"] = value
+        scan_records[scan]["reference_scan"] = ref
 
 
 def _neighbour(scan: int, done: dict[int, tuple]) -> tuple:
@@ -255,6 +260,39 @@ class _ScanJob:
         self.descriptions, self.air_at, self.marker_xy = descriptions, air_at, marker_xy
         self.options, self.products, self.state, self.progress = (options, products, state,
                                                                   progress)
+        self._plan: list[int] = []
+        self._pending: dict[int, Future] = {}
+        self._pool = ThreadPoolExecutor(1, thread_name_prefix="clearfast-frames")
+
+    def plan(self, scans: list[int]) -> None:
+        """The scans about to be built, in order: while one is registered and projected, the
+        next one's frames are calibrated on a helper thread (the kernels release the GIL)."""
+        self._plan = list(scans)
+
+    def close(self) -> None:
+        """Stop the helper thread (pending work is dropped)."""
+        for f in self._pending.values():
+            f.cancel()
+        self._pending.clear()
+        self._pool.shutdown(wait=True)
+
+    def _calibrated(self, scan: int) -> list:
+        """Apparent-temperature frames of ``scan``, computing the planned next scan's
+        meanwhile."""
+        pending = self._pending.pop(scan, None)
+        if pending is not None:
+            frames = pending.result()
+        else:
+            frames = list(scan_frames(self.ctx, scan, self.air_at,
+                                      atmosphere=self.options.atmosphere))
+        if scan in self._plan:
+            k = self._plan.index(scan)
+            if k + 1 < len(self._plan) and self._plan[k + 1] not in self._pending:
+                nxt = self._plan[k + 1]
+                self._pending[nxt] = self._pool.submit(
+                    lambda: list(scan_frames(self.ctx, nxt, self.air_at,
+                                             atmosphere=self.options.atmosphere)))
+        return frames
 
     def frame_times(self, scan: int, frames) -> np.ndarray:
         """Time (UTC epoch s) of each frame of ``frames`` (band 0 of its position)."""
@@ -288,7 +326,7 @@ class _ScanJob:
         the COG and record the unit."""
         ctx, options, survey = self.ctx, self.options, self.ctx.survey
         t_scan = time.perf_counter()
-        frames = list(scan_frames(ctx, scan, self.air_at, atmosphere=options.atmosphere))
+        frames = self._calibrated(scan)
         times = self.frame_times(scan, frames)
         fit = None
         attitude = init_attitude
@@ -350,6 +388,7 @@ def _scan_mosaics(job: _ScanJob, order: list[int], ref: int
     scan_records: dict[int, dict] = {}
     previous = reference = None
     model = stored_model(state)
+    job.plan([s for s in order if state.done(f"scan_{s:03d}") is None])
     for scan in order:
         rec = state.done(f"scan_{scan:03d}")
         if rec is not None:
@@ -367,7 +406,10 @@ def _scan_mosaics(job: _ScanJob, order: list[int], ref: int
     anchored = [s for s in order if (scan_records[s].get("attitude") or {})
                 .get("n_marker_ties", 0) >= 2]
     if options.coregister and anchored:
-        for k in range(order.index(anchored[0]) - 1, -1, -1):
+        back = list(range(order.index(anchored[0]) - 1, -1, -1))
+        job.plan([order[k] for k in back
+                  if scan_records[order[k]].get("refit_from") != order[k + 1]])
+        for k in back:
             scan, nxt = order[k], order[k + 1]
             if scan_records[scan].get("refit_from") == nxt:
                 continue
@@ -443,13 +485,16 @@ def _process(survey_path: str | Path, products: Path, options: ProcessOptions, r
     _, marker_xy = _survey_markers(survey, epsg)
     job = _ScanJob(ctx, grid, epsg, descriptions, air_at, marker_xy, options, products, state,
                    progress)
-    with meter.stage("mosaics"):
-        scan_records, attitudes = _scan_mosaics(job, order, ref)
     adjustment = None
-    if options.coregister and options.adjust_attitude:
-        with meter.stage("attitude_adjustment"):
-            adjustment = adjust_survey_attitude(job, state, order, scan_records, attitudes,
-                                                progress)
+    try:
+        with meter.stage("mosaics"):
+            scan_records, attitudes = _scan_mosaics(job, order, ref)
+        if options.coregister and options.adjust_attitude:
+            with meter.stage("attitude_adjustment"):
+                adjustment = adjust_survey_attitude(job, state, order, scan_records,
+                                                    attitudes, progress)
+    finally:
+        job.close()
     with meter.stage("residuals_and_footprint"):
         _temporal_residuals(products, scan_records, ref, options.coregister)
         valid = None

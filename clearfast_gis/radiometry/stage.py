@@ -18,6 +18,7 @@ import cv2
 import numpy as np
 from numpy.typing import ArrayLike
 
+from clearfast_gis import kernels
 from clearfast_gis.errors import InvalidInput
 from clearfast_gis.progress import NULL_PROGRESS, Progress
 from clearfast_gis.radiometry.apparent import raw_to_apparent
@@ -30,6 +31,7 @@ from clearfast_gis.radiometry.calibration import (
     blend_gain_offsets,
     select_events,
 )
+from clearfast_gis.radiometry.fused import apparent_frame
 from clearfast_gis.radiometry.table import BandTable
 from clearfast_gis.radiometry.timeseries import interpolate_log
 from clearfast_gis.units import c_to_k
@@ -213,7 +215,13 @@ def apparent_temperature_frames(
                                  (raw.shape[2], raw.shape[1]), interpolation=cv2.INTER_LINEAR)
         else:
             tau = 1.0
-        out[k] = raw_to_apparent(raw[k], blend_gain_offsets(parts), tau, air.t_air_k[k], table)
+        if kernels.reference():
+            out[k] = raw_to_apparent(raw[k], blend_gain_offsets(parts), tau, air.t_air_k[k],
+                                     table)
+        else:
+            tau_map = np.broadcast_to(np.asarray(tau, dtype=np.float32), raw.shape[1:])
+            apparent_frame(raw[k], parts, tau_map, float(table.radiance(air.t_air_k[k])),
+                           table, out[k])
         progress.advance(1)
     return out
 

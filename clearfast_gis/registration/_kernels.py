@@ -42,7 +42,7 @@ def _bspline3_deriv(x: float) -> float:
     return 0.0
 
 
-@njit(cache=True, fastmath=_FASTMATH)
+@njit(cache=True, nogil=True, fastmath=_FASTMATH)
 def parzen_joint_histogram(
     us: np.ndarray,
     vs: np.ndarray,
@@ -147,7 +147,7 @@ def parzen_joint_histogram(
     return count
 
 
-@njit(cache=True)
+@njit(cache=True, nogil=True)
 def mi_from_histogram(hist: np.ndarray, dhist: np.ndarray, want_grad: bool,
                       grad: np.ndarray) -> float:
     """Mutual information (nats) of a joint histogram and, optionally, its gradient.

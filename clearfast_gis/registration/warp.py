@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from functools import lru_cache
+
 import cv2
 import numpy as np
 
@@ -47,13 +49,23 @@ def warp_conformal(
     # image edge: a point is inside when it lies in [0, W-1] x [0, H-1] (tolerance 1e-3 px)
     out = cv2.warpAffine(src, m, (w, h), flags=_FLAGS[order] | cv2.WARP_INVERSE_MAP,
                          borderMode=cv2.BORDER_REPLICATE)
-    hs, ws = src.shape
+    out[_outside(tuple(m.ravel().tolist()), src.shape, (h, w))] = np.nan
+    return out
+
+
+@lru_cache(maxsize=16)
+def _outside(m: tuple, in_shape: tuple[int, int], out_shape: tuple[int, int]) -> np.ndarray:
+    """Output pixels (H, W) whose source point lies outside ``[0, W-1] x [0, H-1]`` of the
+    input (tolerance 1e-3 px), for the 2x3 inverse map ``m``; remembered (a band offset
+    warps every frame of a survey with one matrix)."""
+    (hs, ws), (h, w) = in_shape, out_shape
+    m00, m01, m02, m10, m11, m12 = m
     cols = np.arange(w, dtype=np.float64)
     rows = np.arange(h, dtype=np.float64)[:, None]
     tol = 1e-3
-    u = m[0, 0] * cols + (m[0, 1] * rows + m[0, 2])
+    u = m00 * cols + (m01 * rows + m02)
     outside = (u < -tol) | (u > ws - 1 + tol)
-    v = m[1, 0] * cols + (m[1, 1] * rows + m[1, 2])
+    v = m10 * cols + (m11 * rows + m12)
     outside |= (v < -tol) | (v > hs - 1 + tol)
-    out[outside] = np.nan
-    return out
+    outside.flags.writeable = False
+    return outside

@@ -1,0 +1,45 @@
+"""Threads for the chain's independent pieces of work (images of a stack, scans).
+
+The heavy kernels release the GIL (numba ``nogil``, OpenCV, GDAL), so threads share one
+process's memory and run on all cores. ``CLEARFAST_THREADS`` caps the threads (a batch worker
+sets it so that its processes do not oversubscribe the machine).
+"""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Callable, Iterable
+from concurrent.futures import ThreadPoolExecutor
+from typing import TypeVar
+
+T = TypeVar("T")
+R = TypeVar("R")
+
+MAX_THREADS = 4
+"""Threads used at most by default (the chain's stages stop scaling beyond)."""
+
+
+def n_threads() -> int:
+    """Threads to use: ``CLEARFAST_THREADS`` if set (>= 1), else min(CPU count, 4)."""
+    env = os.environ.get("CLEARFAST_THREADS", "").strip()
+    if env.isdigit() and int(env) >= 1:
+        return int(env)
+    try:
+        cpus = len(os.sched_getaffinity(0))
+    except AttributeError:  # not Linux
+        cpus = os.cpu_count() or 1
+    return max(1, min(cpus, MAX_THREADS))
+
+
+def thread_map(fn: Callable[[T], R], items: Iterable[T], threads: int | None = None
+               ) -> list[R]:
+    """``[fn(x) for x in items]`` on a pool of threads, results in the order of ``items``.
+
+    The first exception raised by ``fn`` is raised here (after the running calls finish).
+    """
+    items = list(items)
+    n = n_threads() if threads is None else max(1, int(threads))
+    if n == 1 or len(items) < 2:
+        return [fn(x) for x in items]
+    with ThreadPoolExecutor(min(n, len(items)), thread_name_prefix="clearfast") as pool:
+        return list(pool.map(fn, items))
