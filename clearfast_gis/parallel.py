@@ -8,8 +8,9 @@ sets it so that its processes do not oversubscribe the machine).
 from __future__ import annotations
 
 import os
-from collections.abc import Callable, Iterable
-from concurrent.futures import ThreadPoolExecutor
+from collections import deque
+from collections.abc import Callable, Iterable, Iterator
+from concurrent.futures import Future, ThreadPoolExecutor
 from typing import TypeVar
 
 T = TypeVar("T")
@@ -43,3 +44,30 @@ def thread_map(fn: Callable[[T], R], items: Iterable[T], threads: int | None = N
         return [fn(x) for x in items]
     with ThreadPoolExecutor(min(n, len(items)), thread_name_prefix="clearfast") as pool:
         return list(pool.map(fn, items))
+
+
+def thread_imap(fn: Callable[[T], R], items: Iterable[T], threads: int | None = None,
+                ahead: int = 8) -> Iterator[R]:
+    """``fn`` over ``items`` on a pool of threads, yielded lazily in the order of ``items``.
+
+    At most ``ahead`` results per thread are computed ahead of the consumer (bounded memory);
+    the consumer's own work (e.g. inserting projected frames into a mosaic in scan order)
+    overlaps with the next calls.
+    """
+    n = n_threads() if threads is None else max(1, int(threads))
+    if n == 1:
+        for x in items:
+            yield fn(x)
+        return
+    window: deque[Future] = deque()
+    with ThreadPoolExecutor(n, thread_name_prefix="clearfast") as pool:
+        try:
+            for x in items:
+                window.append(pool.submit(fn, x))
+                if len(window) >= ahead * n:
+                    yield window.popleft().result()
+            while window:
+                yield window.popleft().result()
+        finally:
+            for f in window:
+                f.cancel()

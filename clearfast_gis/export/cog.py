@@ -20,6 +20,7 @@ from affine import Affine
 
 from clearfast_gis.atomic import atomic_path
 from clearfast_gis.errors import InvalidInput
+from clearfast_gis.parallel import n_threads
 from clearfast_gis.timeutil import format_utc, parse_utc
 
 SCAN_TIME_TAG = "CLEARFAST_SCAN_TIME_UTC"
@@ -179,7 +180,7 @@ def write_cog(
             rasterio.shutil.copy(
                 src, out.name, driver="COG", COMPRESS="DEFLATE", PREDICTOR="3",
                 BLOCKSIZE=str(BLOCK_SIZE_PX), OVERVIEWS="FORCE_USE_EXISTING",
-                BIGTIFF="IF_SAFER",
+                BIGTIFF="IF_SAFER", NUM_THREADS=str(n_threads()),
             )
             data = out.read()
     with atomic_path(path) as tmp:

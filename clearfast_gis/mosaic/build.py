@@ -13,6 +13,7 @@ from clearfast_gis.mosaic.coregister import FrameCorrection, coregister_projecte
 from clearfast_gis.mosaic.insert import MosaicCanvas
 from clearfast_gis.mosaic.project import project_frame
 from clearfast_gis.mosaic.seams import fit_linear_histogram_mapping
+from clearfast_gis.parallel import thread_imap
 from clearfast_gis.progress import NULL_PROGRESS, Progress
 
 
@@ -98,8 +99,9 @@ def build_scan_mosaic(frames: Iterable[FrameInput], camera, grid: GroundGrid, n_
     canvas = MosaicCanvas(n_bands, grid.height, grid.width)
     corrections: dict[int, FrameCorrection] = {}
     seam_gains: dict[int, tuple[float, float]] = {}
-    for frame in frames:
-        projected = project_frame(frame.values, camera, frame.pose, grid)
+    frames = list(frames)
+    projections = thread_imap(lambda f: project_frame(f.values, camera, f.pose, grid), frames)
+    for frame, projected in zip(frames, projections, strict=True):
         progress.advance()
         if projected is None:
             continue

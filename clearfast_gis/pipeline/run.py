@@ -263,6 +263,9 @@ class _ScanJob:
         self._plan: list[int] = []
         self._pending: dict[int, Future] = {}
         self._pool = ThreadPoolExecutor(1, thread_name_prefix="clearfast-frames")
+        self._writer = ThreadPoolExecutor(1, thread_name_prefix="clearfast-writer")
+        self._writing: tuple | None = None
+        self._last: tuple | None = None  # (scan, values, source) of the last scan built
 
     def plan(self, scans: list[int]) -> None:
         """The scans about to be built, in order: while one is registered and projected, the
@@ -270,11 +273,17 @@ class _ScanJob:
         self._plan = list(scans)
 
     def close(self) -> None:
-        """Stop the helper thread (pending work is dropped)."""
+        """Finish the scan being written, stop the helper threads (frames calibrated ahead
+        are dropped)."""
         for f in self._pending.values():
             f.cancel()
         self._pending.clear()
         self._pool.shutdown(wait=True)
+        try:
+            self.flush()
+        finally:
+            self._writer.shutdown(wait=True)
+            self._last = None
 
     def _calibrated(self, scan: int) -> list:
         """Apparent-temperature frames of ``scan``, computing the planned next scan's
@@ -314,8 +323,13 @@ class _ScanJob:
             return t, with_attitude(frame_pose(ctx, t, fr.pan_deg[r], fr.tilt_deg[r]),
                                     tuple(placement_attitude(rec, model, np.array([t]))[0]))
 
-        return ReferenceMosaic(scan, read_mosaic(self.products / mosaic_rel(scan)).bands_c,
-                               np.load(_source_path(self.products, scan)), frame_at)
+        if self._last is not None and self._last[0] == scan:
+            values, source = self._last[1], self._last[2]
+        else:
+            self.flush()
+            values = read_mosaic(self.products / mosaic_rel(scan)).bands_c
+            source = np.load(_source_path(self.products, scan))
+        return ReferenceMosaic(scan, values, source, frame_at)
 
     def build(self, scan: int, references: list[ReferenceMosaic], init_attitude: tuple,
               refit_from: int | None = None, model=None, fitted: dict | None = None) -> dict:
@@ -340,6 +354,7 @@ class _ScanJob:
                                     n_samples=options.attitude_samples)
                 attitude = fit.attitude_rpy_deg
             placed = reposed(frames, attitude)
+        self.flush()  # the previous scan's files were written meanwhile: record its unit
         progress = self.progress if refit_from is None and model is None else NULL_PROGRESS
         m = build_scan_mosaic(placed, ctx.camera, self.grid, len(survey.bands),
                               coregister=options.coregister and options.frame_refine,
@@ -348,15 +363,6 @@ class _ScanJob:
                               max_angle_deg=options.max_angle_deg,
                               seam_balance=options.seam_balance, progress=progress)
         t_start, t_mean = _scan_time(survey, scan)
-        rel = mosaic_rel(scan)
-        write_cog(self.products / rel, m.values, self.grid.transform, self.epsg,
-                  self.descriptions,
-                  tags={"CLEARFAST_SURVEY_ID": survey.manifest["survey_id"],
-                        "CLEARFAST_SCAN": scan,
-                        "CLEARFAST_SEAM_BALANCE": options.seam_balance},
-                  scan_time_s=t_mean)
-        with atomic_path(_source_path(self.products, scan)) as tmp, open(tmp, "wb") as fh:
-            np.save(fh, m.source)
         rec = {"scan": scan, "time_s": t_mean, "start_s": t_start,
                "attitude": None if fit is None else fit.as_dict(),
                "ties": [] if fit is None else [t.as_list() for t in fit.ties],
@@ -366,8 +372,39 @@ class _ScanJob:
         if model is not None and fitted is not None:
             rec.update({k: fitted.get(k) for k in ("attitude", "ties", "refit_from")})
             rec["adjusted"] = True
-        self.state.finish(f"scan_{scan:03d}", rec, [rel])
+        self._write(scan, m.values, m.source, t_mean, rec)
         return rec
+
+    def _write(self, scan: int, values: np.ndarray, source: np.ndarray, t_mean: float,
+               rec: dict) -> None:
+        """Write the scan's COG and source map on the writer thread (while the next scan is
+        computed); its run-state unit is recorded once the files are in place
+        (:meth:`flush`)."""
+        self.flush()
+        rel = mosaic_rel(scan)
+        survey = self.ctx.survey
+
+        def write() -> None:
+            write_cog(self.products / rel, values, self.grid.transform, self.epsg,
+                      self.descriptions,
+                      tags={"CLEARFAST_SURVEY_ID": survey.manifest["survey_id"],
+                            "CLEARFAST_SCAN": scan,
+                            "CLEARFAST_SEAM_BALANCE": self.options.seam_balance},
+                      scan_time_s=t_mean)
+            with atomic_path(_source_path(self.products, scan)) as tmp, \
+                    open(tmp, "wb") as fh:
+                np.save(fh, source)
+
+        self._writing = (self._writer.submit(write), scan, rec, rel)
+        self._last = (scan, values, source)
+
+    def flush(self) -> None:
+        """Wait for the scan being written and record its unit in the run state."""
+        if self._writing is not None:
+            future, scan, rec, rel = self._writing
+            self._writing = None
+            future.result()
+            self.state.finish(f"scan_{scan:03d}", rec, [rel])
 
 
 def _scan_mosaics(job: _ScanJob, order: list[int], ref: int

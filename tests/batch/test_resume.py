@@ -120,13 +120,15 @@ def assert_complete(products: Path) -> None:
 
 
 def comparable_digests(products: Path) -> dict[str, str]:
-    """sha256 of every product; products.json and report.html without their timings."""
+    """sha256 of every product; products.json and report.html without their timings and
+    resources."""
     out = {}
     for rel, p in product_files(products).items():
         data = p.read_bytes()
         if rel == "products.json":
             doc = json.loads(data)
             doc.pop("timings_s")
+            doc.pop("resources")  # wall/CPU/memory of this run
             data = json.dumps(doc, sort_keys=True).encode()
         elif rel == "report.html":
             data, n = re.subn(rb"<h2>Stage timings</h2><table>.*?</table>", b"", data,
