@@ -571,8 +571,14 @@ def _scan_time(survey, scan: int) -> tuple[float, float]:
 
 
 def _load_stack(products: Path, scans: list[int]) -> tuple[np.ndarray, object]:
-    mos = [read_mosaic(products / mosaic_rel(s)) for s in scans]
-    return np.stack([m.bands_c for m in mos]).astype(np.float32), mos[0]
+    """The scans' mosaics as one float32 (N, B, H, W) array (filled one by one, so that the
+    stack is the only full copy in memory) and the first mosaic's record."""
+    first = read_mosaic(products / mosaic_rel(scans[0]))
+    stack = np.empty((len(scans), *first.bands_c.shape), dtype=np.float32)
+    stack[0] = first.bands_c
+    for k, s in enumerate(scans[1:], start=1):
+        stack[k] = read_mosaic(products / mosaic_rel(s)).bands_c
+    return stack, first
 
 
 def _mosaics_digest(state: RunState, scans: list[int]) -> str:
@@ -618,8 +624,8 @@ def _anomaly_stage(ctx, survey, products: Path, options: ProcessOptions, state: 
         if options.invert and feats:
             forcing = forcing_from_weather(ctx.weather)
             soil_log = read_soil_log(survey.path("soil"), survey.label("soil"))
-            background = np.nanmedian(np.where(labels[None] > 0, np.nan, stack[:, 0]),
-                                      axis=(1, 2))
+            outside = labels == 0
+            background = np.array([np.nanmedian(img[outside]) for img in stack[:, 0]])
             soil, alpha, sigma = site_soil(soil_log, forcing, times, background)
             inversions = characterise(feats, times, forcing, soil, progress=progress)
         elif not options.invert:
