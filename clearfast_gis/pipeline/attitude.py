@@ -16,6 +16,7 @@ from clearfast_gis.mosaic.adjust import LinearTie, attitude_at, displacement_jac
 from clearfast_gis.mosaic.attitude import GroundTie, fit_attitude, with_attitude
 from clearfast_gis.mosaic.coregister import coregister_projected
 from clearfast_gis.mosaic.markers import locate_marker
+from clearfast_gis.parallel import thread_map
 
 MARKER_WEIGHT = 5.0
 """Weight of a marker tie relative to an image-registration tie (markers are surveyed)."""
@@ -181,16 +182,25 @@ def scan_attitude(frames: list[FrameInput], times_s: np.ndarray, camera, grid: G
     if references:
         pick = np.unique(np.linspace(0, len(placed) - 1, min(n_samples, len(placed)))
                          .round().astype(int))
-        for i in pick:
+
+        def measure(i: int):
+            """Frame ``i`` projected, and its displacement against each reference."""
             pf = project_frame(placed[i].values, camera, placed[i].pose, grid)
             if pf is None:
+                return None
+            rs, cs = pf.window.slices
+            return pf, [coregister_projected(pf, ref.values[:, rs, cs], grid.pixel_size,
+                                             max_shift_m=search_m, max_angle_deg=0.0)[1]
+                        for ref in references]
+
+        for i, measured in zip(pick, thread_map(measure, pick), strict=True):
+            if measured is None:
                 continue
+            pf, corrs = measured
             rs, cs = pf.window.slices
             xc = grid.x0 + (pf.window.col0 + pf.window.width / 2) * grid.pixel_size
             yc = grid.y0 - (pf.window.row0 + pf.window.height / 2) * grid.pixel_size
-            for ref in references:
-                _, corr, _ = coregister_projected(pf, ref.values[:, rs, cs], grid.pixel_size,
-                                                  max_shift_m=search_m, max_angle_deg=0.0)
+            for ref, corr in zip(references, corrs, strict=True):
                 if not corr.applied:
                     continue
                 ties.append(GroundTie(int(i), xc, yc, corr.dx_m, corr.dy_m, 1.0))
