@@ -14,8 +14,11 @@ ground projection      cell-centre maps (numba) + ``cv2.remap``    ``Camera.proj
                                                                    + scipy ``map_coordinates``
 inverse Planck         radiance-uniform table (numba)              the paper's 0.1 K table +
                                                                    ``np.interp``
-thermal inversion      one site table for all anomalies            a table per anomaly
 =====================  =========================================  ===========================
+
+The thermal inversion has no reference set in the chain: it always inverts every anomaly on
+one site table of forward runs (``benchmarks/thermal_inversion.py`` compares it with a model
+run per anomaly).
 
 The choice is process-wide (``clearfast process --kernels``); :func:`use` sets it for a block.
 """

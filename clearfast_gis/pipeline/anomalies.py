@@ -8,7 +8,6 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from clearfast_gis import kernels
 from clearfast_gis.detection import blob_features, classify, detect_anomalies
 from clearfast_gis.detection.compact import split_oversized
 from clearfast_gis.detection.detector import as_image_stack
@@ -309,8 +308,7 @@ def radius_nodes(radii_m: np.ndarray, max_nodes: int = 3) -> np.ndarray:
 
 def characterise(features: list[AnomalyFeatures], times_s: np.ndarray, forcing: Forcing,
                  soil, progress: Progress = NULL_PROGRESS) -> dict[int, Inversion]:
-    """Depth and diffusivity of each anomaly with the thermal model (one site table; with
-    ``--kernels reference`` a table per anomaly, as a model run per anomaly would).
+    """Depth and diffusivity of each anomaly with the thermal model (one site table).
 
     Parameters
     ----------
@@ -332,13 +330,9 @@ def characterise(features: list[AnomalyFeatures], times_s: np.ndarray, forcing: 
         return {}
     radii = np.array([0.5 * f.diameter_m for f in features])
     nodes = radius_nodes(radii)
-    per_anomaly = kernels.reference()  # the reference: a forward-model table per anomaly
-    table = None
-    if not per_anomaly:
-        progress.message("thermal model table for radii "
-                         f"{', '.join(f'{r:.2f}' for r in nodes)} m")
-        table = build_site_table(forcing, soil, nodes if nodes.size > 1 else float(nodes[0]),
-                                 times_s)
+    progress.message(f"thermal model table for radii {', '.join(f'{r:.2f}' for r in nodes)} m")
+    table = build_site_table(forcing, soil, nodes if nodes.size > 1 else float(nodes[0]),
+                             times_s)
     out: dict[int, Inversion] = {}
     progress.start("characterise", len(features))
     for f, r in zip(features, radii, strict=True):
@@ -346,8 +340,7 @@ def characterise(features: list[AnomalyFeatures], times_s: np.ndarray, forcing: 
         ring = _band0(f.ring_k) + ZERO_CELSIUS_K
         r_tab = float(np.clip(r, nodes.min(), nodes.max()))
         if (np.isfinite(centre) & np.isfinite(ring)).sum() >= 4:
-            out[f.id] = invert_anomaly(times_s, centre, ring, forcing, soil, r_tab,
-                                       table=None if per_anomaly else table)
+            out[f.id] = invert_anomaly(times_s, centre, ring, forcing, soil, r_tab, table=table)
         progress.advance()
     progress.close()
     return out
