@@ -137,7 +137,7 @@ def write_anomaly_products(products: Path, ctx, survey, anomalies, records: list
 
     from clearfast_gis.export import default_styles, suspects_frame, write_geopackage
     from clearfast_gis.report import ReportData, write_report
-    from clearfast_gis.report.figures import contrast_curve_png, mosaic_panel_png
+    from clearfast_gis.report.figures import ContrastCurves, mosaic_panel_png
 
     crs = f"EPSG:{epsg}"
     pixel = abs(transform.a)
@@ -177,6 +177,7 @@ def write_anomaly_products(products: Path, ctx, survey, anomalies, records: list
                                 [times_s[day], times_s[night]], transform, outline_xy,
                                 labels_txt, cols, epsg)
     curves = {}
+    plotter = ContrastCurves()
     for rec, f in zip(records, anomalies.features, strict=True):
         inv = anomalies.inversions.get(f.id)
         c = np.asarray(f.contrast_k, dtype=float)
@@ -188,7 +189,7 @@ def write_anomaly_products(products: Path, ctx, survey, anomalies, records: list
         elif model is not None:
             model = None
         title = f"{rec['anomaly_id']}  {rec['class_cue']}  status {rec['status']}"
-        curves[rec["anomaly_id"]] = contrast_curve_png(times_s, c, model_t, model, title)
+        curves[rec["anomaly_id"]] = plotter.png(times_s, c, model_t, model, title)
     residuals = [r.get("residual_px") for r in scan_records.values()
                  if r.get("residual_px") is not None]
     applied = sum(1 for r in scan_records.values() for c in r["corrections"].values()
