@@ -145,11 +145,14 @@ def workers_table(survey: Path, work: Path, workers: list[int], n_surveys: int,
         if not (out / "survey.json").exists():
             subset_survey(part, out, n_scans)
         copies.append(out)
-    print(f"\n{n_surveys} surveys of {n_scans} scans, Dask LocalCluster, 1 thread per worker\n")
+    print(f"\n{n_surveys} surveys of {n_scans} scans, Dask LocalCluster, one Dask thread per "
+          "worker, the cores' threads shared between the workers (CLEARFAST_THREADS)\n")
     print("| workers | wall s | speed-up |")
     print("|---|---|---|")
     base = None
     for w in workers:
+        # the worker processes inherit the thread cap: the cores are shared between them
+        os.environ["CLEARFAST_THREADS"] = str(max(1, (os.cpu_count() or 1) // w))
         with LocalCluster(n_workers=w, threads_per_worker=1, processes=True,
                           host="127.0.0.1", dashboard_address=None) as cluster, \
                 Client(cluster):

@@ -9,6 +9,7 @@ from numpy.typing import ArrayLike
 from scipy.interpolate import CubicSpline, NdBSpline, make_interp_spline
 
 from clearfast_gis.errors import InvalidInput
+from clearfast_gis.parallel import thread_map
 from clearfast_gis.progress import Progress
 from clearfast_gis.thermal.forcing import Forcing
 from clearfast_gis.thermal.forward import Bottom, BuriedObject, ObjectModel
@@ -168,13 +169,16 @@ def build_site_table(
             t_grid = model.setup.t[model.setup.first_out:]
             contrast = np.empty((radii.size, depths.size, la.size, t_grid.size))
             background = bg_steps
-        for i, d in enumerate(depths):
-            for j, a in enumerate(la):
-                obj = BuriedObject(float(radius), height_m, float(d),
-                                   object_material(10.0**a, object_rho_c_jm3k))
-                centre = model.surface_steps(obj)[first:, 0]
-                contrast[q, i, j] = centre - bg_steps
-                if progress is not None:
-                    progress.advance(1)
+        def centre_series(ij: tuple[int, int], model=model, radius=radius, first=first):
+            obj = BuriedObject(float(radius), height_m, float(depths[ij[0]]),
+                               object_material(10.0 ** la[ij[1]], object_rho_c_jm3k))
+            series = model.surface_steps(obj)[first:, 0]
+            if progress is not None:
+                progress.advance(1)
+            return series
+
+        cells = [(i, j) for i in range(depths.size) for j in range(la.size)]
+        for (i, j), centre in zip(cells, thread_map(centre_series, cells), strict=True):
+            contrast[q, i, j] = centre - bg_steps
     return SiteTable(radii, depths, la, t_grid, contrast, background, height_m,
                      object_rho_c_jm3k)
