@@ -31,7 +31,7 @@ from clearfast_gis.detection.morphology import (
 )
 from clearfast_gis.detection.reconstruction import binary_reconstruction
 from clearfast_gis.detection.stretch import stretch_threshold
-from clearfast_gis.parallel import thread_map
+from clearfast_gis.parallel import thread_imap
 from clearfast_gis.progress import NULL_PROGRESS, Progress
 
 __all__ = ["DetectionResult", "detect_anomalies", "as_image_stack"]
@@ -146,43 +146,49 @@ def detect_anomalies(
         np.asarray(level, dtype=np.float64) if np.ndim(level) else float(level))
     shape = images.shape[1:]
     want = {"hot": polarity in ("both", "hot"), "cold": polarity in ("both", "cold")}
+    # thresholded hats G_i are kept (the reconstruction of the final mask needs them); the
+    # openings O_i and the reconstructions L_i are folded into counts as they come, so that
+    # memory holds two (K, H, W) boolean stacks, not six
     g = {p: np.zeros((k, *shape), dtype=bool) for p in ("hot", "cold")}
-    o = {p: np.zeros((k, *shape), dtype=bool) for p in ("hot", "cold")}
+    votes = np.zeros(shape, dtype=np.int32)
+    opened = {p: np.zeros((n, *shape), dtype=bool) for p in ("hot", "cold")}
     progress.start("detect", k)
 
-    def one_image(i: int) -> None:
+    def one_image(i: int) -> dict[str, np.ndarray]:
+        o = {}
         for p, hat in (("hot", top_hat_by_reconstruction),
                        ("cold", bottom_hat_by_reconstruction)):
             if want[p]:
                 g[p][i] = stretch_threshold(hat(images[i], d1_px), epsilon)
-                o[p][i] = binary_opening_by_reconstruction(g[p][i], d2_px)
+                o[p] = binary_opening_by_reconstruction(g[p][i], d2_px)
         progress.advance()
+        return o
 
-    thread_map(one_image, range(k))
+    for i, o in enumerate(thread_imap(one_image, range(k))):
+        seen = np.zeros(shape, dtype=bool)
+        for p, op in o.items():
+            seen |= op
+            opened[p][i // b] |= op
+        votes += seen
     progress.close()
-    votes = np.sum(o["hot"] | o["cold"], axis=0, dtype=np.int32)
     m = votes >= level
     out = {}
     scans = {}
     for p in ("hot", "cold"):
-        li = np.zeros((k, *shape), dtype=bool)
+        count = np.zeros(shape, dtype=np.int32)
+        scans[p] = np.zeros((n, *shape), dtype=bool)
         if want[p] and m.any():
-            def lit(i: int, p: str = p, li: np.ndarray = li) -> None:
-                li[i] = binary_reconstruction(m, g[p][i])
-
-            thread_map(lit, range(k))
-        if gamma is None:
-            out[p] = li.any(axis=0)
-        else:
-            out[p] = li.sum(axis=0) >= gamma
-        scans[p] = li.reshape(n, b, *shape).any(axis=1)
+            lis = thread_imap(lambda i, p=p: binary_reconstruction(m, g[p][i]), range(k))
+            for i, li in enumerate(lis):
+                count += li
+                scans[p][i // b] |= li
+        out[p] = count > 0 if gamma is None else count >= gamma
     mask = out["hot"] | out["cold"]
     labels, _ = ndimage.label(mask, structure=_EIGHT)
     return DetectionResult(
         mask_hot=out["hot"], mask_cold=out["cold"], mask=mask,
         labels=labels.astype(np.int32), votes=votes,
         scan_hot=scans["hot"], scan_cold=scans["cold"],
-        opened_hot=o["hot"].reshape(n, b, *shape).any(axis=1),
-        opened_cold=o["cold"].reshape(n, b, *shape).any(axis=1),
+        opened_hot=opened["hot"], opened_cold=opened["cold"],
         level=level, gamma=gamma,
     )

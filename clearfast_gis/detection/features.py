@@ -280,9 +280,12 @@ def blob_features(
     # a pixel seen in some scans only (a footprint that moves, paper §6) still serves the
     # ring of those scans: every mean below is over the scans that saw it
     valid = np.any(np.isfinite(images), axis=0)
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore", category=RuntimeWarning)
-        image_noise = np.nanstd(cube.reshape(n, b, -1), axis=2)
+    image_noise = None
+    if noise == "image":  # per image, so that no copy of the whole stack is made
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", category=RuntimeWarning)
+            image_noise = np.array([[np.nanstd(cube[i, j]) for j in range(b)]
+                                    for i in range(n)])
     if pixel_size_m is None and transform is not None:
         pixel_size_m = float(np.sqrt(abs(transform.a * transform.e - transform.b * transform.d)))
     ps = float("nan") if pixel_size_m is None else float(pixel_size_m)
