@@ -8,6 +8,7 @@ from __future__ import annotations
 import time
 
 import numpy as np
+from _timing import median_ms
 
 from clearfast_gis.geometry import (
     CameraPose,
@@ -17,16 +18,6 @@ from clearfast_gis.geometry import (
     build_plan,
     ground_maps,
 )
-
-
-def _median_ms(fn, repeat: int = 15) -> float:
-    fn()
-    times = []
-    for _ in range(repeat):
-        t0 = time.perf_counter()
-        fn()
-        times.append(time.perf_counter() - t0)
-    return 1e3 * float(np.median(times))
 
 
 def _numpy_maps(camera, pose, grid):
@@ -48,8 +39,8 @@ def main() -> None:
     print("|---|---|---|---|")
     for name, cam in cams.items():
         mx, _ = ground_maps(cam, pose, grid)
-        fast = _median_ms(lambda c=cam: ground_maps(c, pose, grid))
-        slow = _median_ms(lambda c=cam: _numpy_maps(c, pose, grid), repeat=3)
+        fast = median_ms(lambda c=cam: ground_maps(c, pose, grid))
+        slow = median_ms(lambda c=cam: _numpy_maps(c, pose, grid), repeat=3)
         print(f"| {name} | {100 * np.mean(mx >= 0):.1f} % | {fast:.1f} | {slow:.0f} |")
     print("\nplanner, 30 m x 20 m, platform 3 m off the long side, 13.5 m high, 30 % overlap\n")
     print("| camera | aperture deg | images/scan | rows | across m | along m | plan s |")

@@ -8,10 +8,10 @@ frame's per-pixel geolocation arrays). Prints a markdown table (median ms, agree
 from __future__ import annotations
 
 import argparse
-import time
 
 import cv2
 import numpy as np
+from _timing import median_ms
 from rasterio.crs import CRS
 from rasterio.warp import Resampling, reproject
 
@@ -23,14 +23,6 @@ from clearfast_gis.mosaic.project import footprint_window, project_frame, subgri
 EPSG = 32636
 
 
-def _median_ms(fn, repeat: int) -> float:
-    fn()
-    out = []
-    for _ in range(repeat):
-        t0 = time.perf_counter()
-        fn()
-        out.append(time.perf_counter() - t0)
-    return 1e3 * float(np.median(out))
 
 
 def _gdal(frame: np.ndarray, camera, pose, grid: GroundGrid) -> np.ndarray:
@@ -68,15 +60,15 @@ def main() -> None:
         with kernels.use("reference"):
             ref = project_frame(frame, cam, pose, grid, antialias=False)
         gd = _gdal(frame, cam, pose, grid)
-        t_ours = _median_ms(lambda c=cam, f=frame: project_frame(f, c, pose, grid,
+        t_ours = median_ms(lambda c=cam, f=frame: project_frame(f, c, pose, grid,
                                                                  antialias=False), args.repeat)
 
         def run_ref(c=cam, f=frame):
             with kernels.use("reference"):
                 project_frame(f, c, pose, grid, antialias=False)
 
-        t_ref = _median_ms(run_ref, max(1, args.repeat // 3))
-        t_gdal = _median_ms(lambda c=cam, f=frame: _gdal(f, c, pose, grid),
+        t_ref = median_ms(run_ref, max(1, args.repeat // 3))
+        t_gdal = median_ms(lambda c=cam, f=frame: _gdal(f, c, pose, grid),
                             max(1, args.repeat // 3))
         a, r = ours.values[0], ref.values[0]
         both = np.isfinite(a) & np.isfinite(r) & np.isfinite(gd)

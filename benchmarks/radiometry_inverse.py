@@ -12,6 +12,7 @@ import argparse
 import time
 
 import numpy as np
+from _timing import median_ms
 
 from clearfast_gis.radiometry import (
     BandTable,
@@ -21,16 +22,6 @@ from clearfast_gis.radiometry import (
     paper_table,
     raw_to_apparent,
 )
-
-
-def median_ms(fn, repeat: int) -> float:
-    fn()
-    times = []
-    for _ in range(repeat):
-        t0 = time.perf_counter()
-        fn()
-        times.append(time.perf_counter() - t0)
-    return 1e3 * float(np.median(times))
 
 
 def main() -> None:

@@ -20,33 +20,35 @@ def _walled(seed: np.ndarray, mask: np.ndarray, nodata: np.ndarray, wall: float
     return np.where(nodata, wall, seed), np.where(nodata, wall, mask)
 
 
-def top_hat_reference(image: np.ndarray, d1_px: float) -> np.ndarray:
-    """``f - R_B(f eroded by D1 | f)`` with :func:`skimage.morphology.erosion` and
-    :func:`skimage.morphology.reconstruction`; float (H, W), NaN on no-data."""
+def _hat(image: np.ndarray, d1_px: float, dark: bool) -> np.ndarray:
+    """White (``dark=False``: ``f - R(f eroded | f)``) or black (``R*(f dilated | f) - f``)
+    top-hat by reconstruction with scikit-image; float (H, W), NaN on no-data."""
     f = np.asarray(image)
     f = f if f.dtype.kind == "f" else f.astype(np.float32)
     nodata = np.isnan(f)
-    eroded = erosion(np.where(nodata, np.inf, f), disk(disk_radius_px(d1_px)), mode="max")
-    low = float(np.nanmin(f)) - 1.0 if not nodata.all() else 0.0
-    seed, mask = _walled(eroded, f, nodata, low)
-    rec = reconstruction(seed, mask, method="dilation").astype(f.dtype)
-    out = f - rec
+    footprint = disk(disk_radius_px(d1_px))
+    if dark:
+        seed0 = dilation(np.where(nodata, -np.inf, f), footprint, mode="min")
+        wall = float(np.nanmax(f)) + 1.0 if not nodata.all() else 0.0
+    else:
+        seed0 = erosion(np.where(nodata, np.inf, f), footprint, mode="max")
+        wall = float(np.nanmin(f)) - 1.0 if not nodata.all() else 0.0
+    seed, mask = _walled(seed0, f, nodata, wall)
+    rec = reconstruction(seed, mask, method="erosion" if dark else "dilation").astype(f.dtype)
+    out = rec - f if dark else f - rec
     out[nodata] = np.nan
     return out
+
+
+def top_hat_reference(image: np.ndarray, d1_px: float) -> np.ndarray:
+    """``f - R_B(f eroded by D1 | f)`` with :func:`skimage.morphology.erosion` and
+    :func:`skimage.morphology.reconstruction`; float (H, W), NaN on no-data."""
+    return _hat(image, d1_px, dark=False)
 
 
 def bottom_hat_reference(image: np.ndarray, d1_px: float) -> np.ndarray:
     """``R*_B(f dilated by D1 | f) - f`` (dual of :func:`top_hat_reference`)."""
-    f = np.asarray(image)
-    f = f if f.dtype.kind == "f" else f.astype(np.float32)
-    nodata = np.isnan(f)
-    dilated = dilation(np.where(nodata, -np.inf, f), disk(disk_radius_px(d1_px)), mode="min")
-    high = float(np.nanmax(f)) + 1.0 if not nodata.all() else 0.0
-    seed, mask = _walled(dilated, f, nodata, high)
-    rec = reconstruction(seed, mask, method="erosion").astype(f.dtype)
-    out = rec - f
-    out[nodata] = np.nan
-    return out
+    return _hat(image, d1_px, dark=True)
 
 
 def binary_opening_reference(binary: np.ndarray, d2_px: float) -> np.ndarray:
