@@ -24,7 +24,7 @@ from clearfast_gis.geometry.projection import frame_footprint
 from clearfast_gis.mosaic import build_scan_mosaic, mosaic_grid, temporal_residual
 from clearfast_gis.mosaic.attitude import with_attitude
 from clearfast_gis.mosaic.build import FrameCorrection
-from clearfast_gis.parallel import thread_map
+from clearfast_gis.parallel import thread_imap
 from clearfast_gis.pipeline.adjustment import (
     adjust_survey_attitude,
     placement_attitude,
@@ -164,22 +164,32 @@ def _check_blackbody_pairs(events, survey) -> None:
 
 
 def _temporal_residuals(products: Path, scan_records: dict[int, dict], ref: int,
-                        measure: bool) -> None:
+                        measure: bool) -> np.ndarray:
     """Residual misregistration of every scan's mosaic against the reference scan's (pixels),
     stored in ``scan_records[scan]["residual_px"]`` (None for the reference itself or when it
-    cannot be measured)."""
+    cannot be measured). Each mosaic is read once.
+
+    Returns
+    -------
+    bool (H, W)
+        Cells seen by at least one scan (band 0), for the footprint.
+    """
     reference = read_mosaic(products / mosaic_rel(ref)).bands_c[0] if measure else None
 
-    def residual(scan: int) -> float | None:
+    def residual(scan: int) -> tuple[float | None, np.ndarray]:
+        mosaic = read_mosaic(products / mosaic_rel(scan)).bands_c[0]
         if reference is None or scan == ref:
-            return None
-        r = temporal_residual(reference, read_mosaic(products / mosaic_rel(scan)).bands_c[0])
-        return None if math.isnan(r.shift_px) else r.shift_px
+            return None, np.isfinite(mosaic)
+        r = temporal_residual(reference, mosaic)
+        return (None if math.isnan(r.shift_px) else r.shift_px), np.isfinite(mosaic)
 
-    scans = list(scan_records)
-    for scan, value in zip(scans, thread_map(residual, scans), strict=True):
+    scans = sorted(scan_records)
+    seen = None
+    for scan, (value, finite) in zip(scans, thread_imap(residual, scans), strict=True):
         scan_records[scan]["residual_px"] = value
         scan_records[scan]["reference_scan"] = ref
+        seen = finite if seen is None else seen | finite
+    return seen
 
 
 def _neighbour(scan: int, done: dict[int, tuple]) -> tuple:
@@ -533,11 +543,7 @@ def _process(survey_path: str | Path, products: Path, options: ProcessOptions, r
     finally:
         job.close()
     with meter.stage("residuals_and_footprint"):
-        _temporal_residuals(products, scan_records, ref, options.coregister)
-        valid = None
-        for scan in sorted(scan_records):
-            m = read_mosaic(products / mosaic_rel(scan)).bands_c[0]
-            valid = np.isfinite(m) if valid is None else valid | np.isfinite(m)
+        valid = _temporal_residuals(products, scan_records, ref, options.coregister)
         write_footprint_geojson(products / "footprint.geojson", valid, grid.transform, epsg,
                                 survey.manifest["survey_id"])
     if until == "mosaics":
