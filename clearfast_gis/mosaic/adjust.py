@@ -41,7 +41,8 @@ def moved_point(camera, pose: CameraPose, x: float, y: float,
     x, y : float
         Ground point, survey CRS metres.
     attitude_rpy_deg : (roll, pitch, yaw), degrees
-        The other platform attitude.
+        The other platform attitude (the camera turns about the antenna: see
+        :meth:`CameraPose.with_attitude`).
 
     Returns
     -------
@@ -49,8 +50,7 @@ def moved_point(camera, pose: CameraPose, x: float, y: float,
         The moved ground point, metres (NaN if the ray misses the ground).
     """
     uv = camera.project(np.array([[x, y, 0.0]]), pose)
-    other = CameraPose(pose.position_m, pose.azimuth_deg, pose.elevation_deg,
-                       tuple(float(a) for a in attitude_rpy_deg))
+    other = pose.with_attitude(attitude_rpy_deg)
     return camera.ground_points(uv[:, 0], uv[:, 1], other)[0, :2]
 
 

@@ -45,9 +45,9 @@ class GroundTie:
 
 
 def with_attitude(pose: CameraPose, attitude_rpy_deg: tuple[float, float, float]) -> CameraPose:
-    """The same pose with another platform attitude."""
-    return CameraPose(pose.position_m, pose.azimuth_deg, pose.elevation_deg,
-                      tuple(float(a) for a in attitude_rpy_deg))
+    """The same pose with another platform attitude (on the same antenna position: see
+    :meth:`CameraPose.with_attitude`)."""
+    return pose.with_attitude(attitude_rpy_deg)
 
 
 def _predicted(camera, poses: list[CameraPose], ties: list[GroundTie],

@@ -5,6 +5,7 @@ from __future__ import annotations
 import numpy as np
 
 from clearfast_gis.mosaic.adjust import LinearTie, adjust_attitudes, attitude_at
+from clearfast_gis.pipeline.attitude import mosaic_ties
 from clearfast_gis.progress import Progress
 
 ADJUST_MIN_DEG = 0.01
@@ -13,6 +14,12 @@ more than this, degrees (0.01 deg moves the ground by 0.35 cm at 20 m range)."""
 
 UNIT = "attitude_adjustment"
 """Run-state unit of the adjustment."""
+
+REFINED_UNIT = "attitude_adjustment_refined"
+"""Run-state unit of the refined adjustment (ties between neighbouring adjusted scans)."""
+
+NEIGHBOUR_OFFSETS = (-2, -1, 1, 2)
+"""Scans tied to each scan in the refined adjustment, as steps in time order."""
 
 
 def placement_attitude(rec: dict, model: tuple[np.ndarray, np.ndarray] | None,
@@ -43,24 +50,121 @@ def _finite_or_none(v: float) -> float | None:
 
 
 def stored_model(state) -> tuple[np.ndarray, np.ndarray] | None:
-    """The adjusted attitude recorded in the run state, if the adjustment ran."""
-    unit = state.done(UNIT)
+    """The adjusted attitude recorded in the run state (the refined one once it exists), if
+    the adjustment ran."""
+    unit = state.done(REFINED_UNIT) or state.done(UNIT)
     if unit is None:
         return None
     return np.array(unit["node_times_s"], dtype=float), np.array(unit["nodes_rpy_deg"],
                                                                    dtype=float)
 
 
-def adjust_survey_attitude(job, state, order: list[int], scan_records: dict[int, dict],
-                           attitudes: dict[int, tuple], progress: Progress) -> dict:
-    """Adjust the attitude of every scan at once and mosaic again the scans it moves.
+def neighbour_pairs(order: list[int], offsets: tuple[int, ...] = NEIGHBOUR_OFFSETS
+                    ) -> list[tuple[int, int]]:
+    """(scan, neighbour) pairs to tie: each scan with the scans ``offsets`` away in time order.
 
     Parameters
     ----------
-    job : the pipeline's scan job (``frame_times``, ``build``)
+    order : list of int
+        Scans in time order.
+    offsets : tuple of int
+        Steps along ``order`` (e.g. -1: the previous scan).
+    """
+    return [(s, order[k + o]) for k, s in enumerate(order) for o in offsets
+            if 0 <= k + o < len(order)]
+
+
+def neighbour_ties(job, order: list[int], scan_records: dict[int, dict],
+                   model: tuple[np.ndarray, np.ndarray] | None,
+                   offsets: tuple[int, ...] = NEIGHBOUR_OFFSETS,
+                   progress: Progress | None = None) -> list[LinearTie]:
+    """Ties of every scan to its neighbours in time, measured on the placed mosaics.
+
+    Parameters
+    ----------
+    job : the pipeline's scan job (``reference``, ``ctx``, ``grid``, ``options``)
+    order : list of int
+        Scans in time order.
+    scan_records : dict
+        Per-scan run-state records (how each mosaic was placed).
+    model : (node_times_s (S,), nodes_rpy_deg (S, 3)) or None
+        The attitude the adjusted scans were placed with.
+    offsets : tuple of int
+        Neighbours tied, as steps along ``order``.
+    progress : Progress, optional
+
+    Returns
+    -------
+    list of LinearTie
+    """
+    reach = max(abs(o) for o in offsets)
+    loaded: dict[int, object] = {}
+    ties: list[LinearTie] = []
+    pairs = neighbour_pairs(order, offsets)
+    if progress is not None:
+        progress.start("attitude ties between neighbouring scans", len(order))
+    for k, s in enumerate(order):
+        keep = set(order[max(0, k - reach):k + reach + 1])
+        loaded = {n: m for n, m in loaded.items() if n in keep}
+        for n in keep - set(loaded):
+            loaded[n] = job.reference(n, scan_records[n], model)
+        for other in (n for m, n in pairs if m == s):
+            ties += mosaic_ties(loaded[s], loaded[other], job.ctx.camera, job.grid,
+                                n_samples=job.options.attitude_samples)
+        if progress is not None:
+            progress.advance(1, scan=s)
+    if progress is not None:
+        progress.close()
+    return ties
+
+
+def _fit(ties: list[LinearTie], order: list[int], node_times: np.ndarray, prior: np.ndarray,
+         times: dict[int, np.ndarray], placed: dict[int, np.ndarray]) -> dict:
+    """Adjust, and list the scans whose frames the result moves by more than
+    :data:`ADJUST_MIN_DEG` from their placement ``placed[s]`` (N, 3) at ``times[s]`` (N,)."""
+    adj = adjust_attitudes(ties, order, node_times, prior)
+    rebuild = [s for s in order
+               if np.max(np.abs(attitude_at(times[s], node_times, adj.nodes_rpy_deg)
+                                - placed[s])) > ADJUST_MIN_DEG]
+    return {"node_times_s": node_times.tolist(), "nodes_rpy_deg": adj.nodes_rpy_deg.tolist(),
+            "rms_before_m": _finite_or_none(adj.rms_before_m),
+            "rms_m": _finite_or_none(adj.rms_m), "n_ties": adj.n_ties,
+            "n_used": adj.n_used, "rebuild": rebuild}
+
+
+def _rebuild(job, unit: dict, level: int, scan_records: dict[int, dict],
+             attitudes: dict[int, tuple], progress: Progress) -> None:
+    """Project again, with the unit's attitude, the scans it moves that are not yet placed
+    with it (``adjusted`` below ``level``: 1 for the first adjustment, 2 for the refined)."""
+    model = (np.array(unit["node_times_s"], dtype=float),
+             np.array(unit["nodes_rpy_deg"], dtype=float))
+    todo = [s for s in unit["rebuild"] if int(scan_records[s].get("adjusted") or 0) < level]
+    if not todo:
+        return
+    progress.start("attitude adjustment" if level == 1 else "refined attitude adjustment",
+                   len(todo))
+    job.plan(todo)
+    for s in todo:
+        scan_records[s] = dict(job.build(s, [], attitudes.get(s, (0.0, 0.0, 0.0)),
+                                         model=model, fitted=scan_records[s],
+                                         adjusted=level))
+        progress.advance(1, scan=s)
+    progress.close()
+
+
+def adjust_survey_attitude(job, state, order: list[int], scan_records: dict[int, dict],
+                           attitudes: dict[int, tuple], progress: Progress,
+                           refine: bool = True) -> dict:
+    """Adjust the attitude of every scan at once and mosaic again the scans it moves; then
+    (``refine``) tie every scan to its neighbours in time on those mosaics, adjust again and
+    mosaic again the scans that moves.
+
+    Parameters
+    ----------
+    job : the pipeline's scan job (``frame_times``, ``build``, ``reference``)
     state : RunState
-        The adjustment is a unit of its own; re-projected scans are marked ``adjusted`` so an
-        interrupted run resumes where it stopped.
+        Each adjustment is a unit of its own; re-projected scans are marked ``adjusted``
+        (1, or 2 after the refined adjustment) so an interrupted run resumes where it stopped.
     order : list of int
         Scans in time order.
     scan_records : dict
@@ -68,43 +172,49 @@ def adjust_survey_attitude(job, state, order: list[int], scan_records: dict[int,
     attitudes : dict
         Each scan's own fitted attitude, degrees (the prior).
     progress : Progress
+    refine : bool
+        Run the second, refined adjustment.
 
     Returns
     -------
     dict
         Summary for products.json: RMS of the ties before and after (metres), ties, inliers,
-        the scans projected again.
+        the scans projected again; the same for the refined adjustment under ``refined``.
     """
     survey = job.ctx.survey
     times = {s: survey.frames.time_s[survey.scan_rows(s, 0)] for s in order}
+    node_times = np.array([scan_records[s]["time_s"] for s in order], dtype=float)
+    prior = np.array([attitudes.get(s, (0.0, 0.0, 0.0)) for s in order], dtype=float)
     unit = state.done(UNIT)
     if unit is None:
         ties = [LinearTie.from_list(v) for s in order
                 for v in (scan_records[s].get("ties") or [])]
-        prior = np.array([attitudes.get(s, (0.0, 0.0, 0.0)) for s in order], dtype=float)
-        node_times = np.array([scan_records[s]["time_s"] for s in order], dtype=float)
-        adj = adjust_attitudes(ties, order, node_times, prior)
-        rebuild = [s for s in order
-                   if np.max(np.abs(attitude_at(times[s], node_times, adj.nodes_rpy_deg)
-                                    - placement_attitude(scan_records[s], None, times[s])))
-                   > ADJUST_MIN_DEG]
-        unit = {"node_times_s": node_times.tolist(), "nodes_rpy_deg": adj.nodes_rpy_deg.tolist(),
-                "rms_before_m": _finite_or_none(adj.rms_before_m),
-                "rms_m": _finite_or_none(adj.rms_m), "n_ties": adj.n_ties,
-                "n_used": adj.n_used, "rebuild": rebuild}
+        unit = _fit(ties, order, node_times, prior, times,
+                    {s: placement_attitude(scan_records[s], None, times[s]) for s in order})
         state.finish(UNIT, unit)
-    model = stored_model(state)
-    todo = [s for s in unit["rebuild"] if not scan_records[s].get("adjusted")]
-    if todo:
-        job.plan(todo)
-        progress.start("attitude adjustment", len(todo))
-        for s in todo:
-            scan_records[s] = dict(job.build(s, [], attitudes.get(s, (0.0, 0.0, 0.0)),
-                                             model=model, fitted=scan_records[s]))
-            progress.advance(1, scan=s)
-        progress.close()
+    _rebuild(job, unit, 1, scan_records, attitudes, progress)
+    final = unit
+    refined = state.done(REFINED_UNIT) if refine else None
+    if refine and refined is None:
+        model = (node_times, np.array(unit["nodes_rpy_deg"], dtype=float))
+        markers = [t for s in order for t in map(LinearTie.from_list,
+                                                 scan_records[s].get("ties") or [])
+                   if t.ref_scan is None]
+        ties = markers + neighbour_ties(job, order, scan_records, model, progress=progress)
+        refined = _fit(ties, order, node_times, prior, times,
+                       {s: placement_attitude(scan_records[s], model, times[s])
+                        for s in order})
+        state.finish(REFINED_UNIT, refined)
+    if refined is not None:
+        _rebuild(job, refined, 2, scan_records, attitudes, progress)
+        final = refined
+    nodes = np.array(final["nodes_rpy_deg"], dtype=float)
     for k, s in enumerate(order):
         if scan_records[s].get("attitude"):
             scan_records[s]["attitude"] = dict(scan_records[s]["attitude"],
-                                               adjusted_rpy_deg=list(model[1][k]))
-    return {key: unit[key] for key in ("rms_before_m", "rms_m", "n_ties", "n_used", "rebuild")}
+                                               adjusted_rpy_deg=list(nodes[k]))
+    keys = ("rms_before_m", "rms_m", "n_ties", "n_used", "rebuild")
+    out = {key: unit[key] for key in keys}
+    if refined is not None:
+        out["refined"] = {key: refined[key] for key in keys}
+    return out

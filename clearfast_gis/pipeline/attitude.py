@@ -7,6 +7,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 import shapely
+from scipy import ndimage
 
 from clearfast_gis.geometry.grid import GroundGrid
 from clearfast_gis.geometry.pose import CameraPose
@@ -17,6 +18,7 @@ from clearfast_gis.mosaic.attitude import GroundTie, fit_attitude, with_attitude
 from clearfast_gis.mosaic.coregister import coregister_projected
 from clearfast_gis.mosaic.markers import locate_marker
 from clearfast_gis.parallel import thread_map
+from clearfast_gis.registration import register_conformal
 
 MARKER_WEIGHT = 5.0
 """Weight of a marker tie relative to an image-registration tie (markers are surveyed)."""
@@ -220,3 +222,93 @@ def scan_attitude(frames: list[FrameInput], times_s: np.ndarray, camera, grid: G
     poses = [f.pose for f in frames]
     att, rms, used = fit_attitude(camera, poses, ties, base_rpy_deg=init)
     return AttitudeFit(att, n_marker, n_image, used, rms, tuple(linear))
+
+
+def frame_windows(source: np.ndarray, n_samples: int, min_cells: int = 400
+                  ) -> list[tuple[int, tuple[slice, slice]]]:
+    """Positions to tie and the bounding window of the cells each one supplies in a mosaic.
+
+    Parameters
+    ----------
+    source : int (H, W)
+        Scan-pattern position seen in each cell (-1: none).
+    n_samples : int
+        Positions kept, spread evenly over the positions present.
+    min_cells : int
+        Positions supplying fewer cells are skipped.
+
+    Returns
+    -------
+    list of (position, (row slice, column slice))
+    """
+    positions, counts = np.unique(source[source >= 0], return_counts=True)
+    positions = positions[counts >= min_cells]
+    if positions.size == 0:
+        return []
+    pick = positions[np.unique(np.linspace(0, positions.size - 1,
+                                           min(n_samples, positions.size)).round().astype(int))]
+    boxes = ndimage.find_objects(np.where(source >= 0, source + 1, 0), int(pick.max()) + 1)
+    return [(int(p), boxes[int(p)]) for p in pick if boxes[int(p)] is not None]
+
+
+def mosaic_ties(scan: ReferenceMosaic, other: ReferenceMosaic, camera, grid: GroundGrid,
+                n_samples: int = 40, max_shift_m: float = 0.2, min_overlap: float = 0.5
+                ) -> list[LinearTie]:
+    """Ties between two placed scans, measured mosaic against mosaic.
+
+    For a sample of ``scan``'s frames, the cells each frame supplies to ``scan``'s mosaic are
+    registered (translation only, mutual information) against ``other``'s mosaic under the
+    same window. Unlike a frame fitted against a reference, a tie is kept whenever the
+    registration converges, even at zero shift: after an adjustment most frames are already
+    in place, and keeping only those that moved would bias the sample.
+
+    Parameters
+    ----------
+    scan, other : ReferenceMosaic
+        The two scans' mosaics (degrees C, band 0 used), source maps and placements.
+    camera : camera model
+    grid : GroundGrid
+        The mosaic grid (cell size in metres).
+    n_samples : int
+        Frames of ``scan`` tied.
+    max_shift_m : float
+        Largest shift searched, metres.
+    min_overlap : float
+        Fraction of a frame's cells that ``other`` must cover.
+
+    Returns
+    -------
+    list of LinearTie
+        ``d_m`` moves ``scan``'s content onto ``other``'s; weight 1.
+    """
+    ps = grid.pixel_size
+    out: list[LinearTie] = []
+    for pos, (rs, cs) in frame_windows(scan.source, n_samples):
+        mask = scan.source[rs, cs] == pos
+        fixed = other.values[0][rs, cs]
+        if np.count_nonzero(mask & np.isfinite(fixed)) < min_overlap * np.count_nonzero(mask):
+            continue
+        t = register_conformal(fixed, scan.values[0][rs, cs], moving_mask=mask,
+                               max_shift_px=max_shift_m / ps, max_angle_deg=0.0, bins=24)
+        if not t.converged:
+            continue
+        rows, cols = np.nonzero(mask)
+        centre = np.array([cols.mean(), rows.mean()])
+        du, dv = centre - t.apply(centre[None])[0]
+        d = np.array([du * ps, -dv * ps])
+        xc = grid.x0 + (cs.start + centre[0] + 0.5) * ps
+        yc = grid.y0 - (rs.start + centre[1] + 0.5) * ps
+        src = other.source[rs, cs][mask]
+        src = src[src >= 0]
+        if src.size == 0:
+            continue
+        values, counts = np.unique(src, return_counts=True)
+        j = int(values[np.argmax(counts)])
+        t_scan, pose = scan.frame_at(pos)
+        t_other, pose_other = other.frame_at(j)
+        out.append(LinearTie(
+            scan.scan, float(t_scan), np.asarray(pose.attitude_rpy_deg, dtype=float),
+            displacement_jacobian(camera, pose, xc, yc), d, 1.0, other.scan, float(t_other),
+            np.asarray(pose_other.attitude_rpy_deg, dtype=float),
+            displacement_jacobian(camera, pose_other, xc + d[0], yc + d[1])))
+    return out

@@ -342,12 +342,14 @@ class _ScanJob:
         return ReferenceMosaic(scan, values, source, frame_at)
 
     def build(self, scan: int, references: list[ReferenceMosaic], init_attitude: tuple,
-              refit_from: int | None = None, model=None, fitted: dict | None = None) -> dict:
+              refit_from: int | None = None, model=None, fitted: dict | None = None,
+              adjusted: int = 1) -> dict:
         """Mosaic ``scan``, its attitude fitted against ``references`` (the neighbouring
         scan's mosaic, and the reference scan's so that errors do not accumulate) and the
         markers, or placed with the survey-wide attitude ``model`` (node times, nodes) of the
-        adjustment (then ``fitted`` is the scan's earlier record, whose fit is kept); write
-        the COG and record the unit."""
+        adjustment (then ``fitted`` is the scan's earlier record, whose fit is kept, and
+        ``adjusted`` the level recorded: 1 for the first adjustment, 2 for the refined one);
+        write the COG and record the unit (on the writer thread, see :meth:`flush`)."""
         ctx, options, survey = self.ctx, self.options, self.ctx.survey
         t_scan = time.perf_counter()
         frames = self._calibrated(scan)
@@ -381,7 +383,7 @@ class _ScanJob:
                "seam_gains": {str(k): list(v) for k, v in m.seam_gains.items()}}
         if model is not None and fitted is not None:
             rec.update({k: fitted.get(k) for k in ("attitude", "ties", "refit_from")})
-            rec["adjusted"] = True
+            rec["adjusted"] = adjusted
         self._write(scan, m.values, m.source, t_mean, rec)
         return rec
 

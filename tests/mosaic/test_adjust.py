@@ -8,7 +8,7 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from clearfast_gis.geometry.cameras import EquiangularCamera
-from clearfast_gis.geometry.pose import CameraPose
+from clearfast_gis.geometry.pose import CameraPose, pose_from_ptu
 from clearfast_gis.mosaic.adjust import (
     LinearTie,
     adjust_attitudes,
@@ -145,3 +145,25 @@ def test_adjustment_rejects_an_outlier_and_smooths_scans_without_ties():
     kinked[2] += 0.2
     pulled = adjust_attitudes([], list(range(n_scans)), node_times, kinked)
     assert np.all(np.abs(pulled.nodes_rpy_deg[2] - steady[2]) < 0.1)
+
+
+def test_attitude_change_turns_the_antenna_to_camera_lever_arm():
+    """A pose from an antenna position keeps the antenna fixed when its attitude changes: the
+    camera 0.4 m below the antenna moves by ~3 cm for 4.5 deg of roll, as the true pose."""
+    platform = {"antenna_to_camera_m": [0.0, 0.0, -0.4]}
+    antenna = np.array([0.0, 0.0, 13.4])
+    att = (-4.5, 1.0, 2.0)
+    placed = pose_from_ptu(antenna, 10.0, -40.0, platform)
+    truth = pose_from_ptu(antenna, 10.0, -40.0, platform, att)
+    turned = placed.with_attitude(att)
+    np.testing.assert_allclose(turned.position_m, truth.position_m, atol=1e-12)
+    assert turned.attitude_rpy_deg == truth.attitude_rpy_deg
+    assert 0.03 < np.hypot(*(turned.position_m - placed.position_m)[:2]) < 0.035
+    # content seen with the true pose and placed with the zero attitude moves back exactly
+    uv = np.array([[160.0], [128.0]])
+    ground = CAMERA.ground_points(uv[0], uv[1], truth)[0, :2]
+    where = CAMERA.ground_points(uv[0], uv[1], placed)[0, :2]
+    np.testing.assert_allclose(moved_point(CAMERA, placed, *where, att), ground, atol=1e-6)
+    # a pose without an antenna offset only turns
+    bare = pose(2, (0.0, 0.0, 0.0)).with_attitude(att)
+    np.testing.assert_allclose(bare.position_m, POSITION)
