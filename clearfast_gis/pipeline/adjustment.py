@@ -5,6 +5,7 @@ from __future__ import annotations
 import numpy as np
 
 from clearfast_gis.mosaic.adjust import LinearTie, adjust_attitudes, attitude_at
+from clearfast_gis.parallel import thread_map
 from clearfast_gis.pipeline.attitude import mosaic_ties
 from clearfast_gis.progress import Progress
 
@@ -17,6 +18,13 @@ UNIT = "attitude_adjustment"
 
 REFINED_UNIT = "attitude_adjustment_refined"
 """Run-state unit of the refined adjustment (ties between neighbouring adjusted scans)."""
+
+REFINE_MIN_SHARE = 0.25
+"""The refined adjustment runs (by default) when the first one re-projects at least this share
+of the scans: the platform moved during the survey (the trial's sinking lift), the per-scan
+fits were chained through weak ties and the neighbour ties pay off. When the first adjustment
+leaves (almost) every scan in place, the per-scan fits already agree and a second pass,
+which measures about as many ties again as the whole mosaic stage, would only cost time."""
 
 NEIGHBOUR_OFFSETS = (-2, -1, 1, 2)
 """Scans tied to each scan in the refined adjustment, as steps in time order."""
@@ -108,9 +116,11 @@ def neighbour_ties(job, order: list[int], scan_records: dict[int, dict],
         loaded = {n: m for n, m in loaded.items() if n in keep}
         for n in keep - set(loaded):
             loaded[n] = job.reference(n, scan_records[n], model)
-        for other in (n for m, n in pairs if m == s):
-            ties += mosaic_ties(loaded[s], loaded[other], job.ctx.camera, job.grid,
-                                n_samples=job.options.attitude_samples)
+        others = [n for m, n in pairs if m == s]
+        for found in thread_map(lambda other, here=loaded[s], near=loaded: mosaic_ties(
+                here, near[other], job.ctx.camera, job.grid,
+                n_samples=job.options.attitude_samples), others):
+            ties += found
         if progress is not None:
             progress.advance(1, scan=s)
     if progress is not None:
@@ -154,7 +164,7 @@ def _rebuild(job, unit: dict, level: int, scan_records: dict[int, dict],
 
 def adjust_survey_attitude(job, state, order: list[int], scan_records: dict[int, dict],
                            attitudes: dict[int, tuple], progress: Progress,
-                           refine: bool = True) -> dict:
+                           refine: bool | None = None) -> dict:
     """Adjust the attitude of every scan at once and mosaic again the scans it moves; then
     (``refine``) tie every scan to its neighbours in time on those mosaics, adjust again and
     mosaic again the scans that moves.
@@ -172,8 +182,9 @@ def adjust_survey_attitude(job, state, order: list[int], scan_records: dict[int,
     attitudes : dict
         Each scan's own fitted attitude, degrees (the prior).
     progress : Progress
-    refine : bool
-        Run the second, refined adjustment.
+    refine : bool or None
+        Run the second, refined adjustment; None: when the first one re-projects at least
+        :data:`REFINE_MIN_SHARE` of the scans.
 
     Returns
     -------
@@ -194,6 +205,9 @@ def adjust_survey_attitude(job, state, order: list[int], scan_records: dict[int,
         state.finish(UNIT, unit)
     _rebuild(job, unit, 1, scan_records, attitudes, progress)
     final = unit
+    if refine is None:
+        refine = state.done(REFINED_UNIT) is not None \
+            or len(unit["rebuild"]) >= REFINE_MIN_SHARE * len(order)
     refined = state.done(REFINED_UNIT) if refine else None
     if refine and refined is None:
         model = (node_times, np.array(unit["nodes_rpy_deg"], dtype=float))
@@ -215,6 +229,5 @@ def adjust_survey_attitude(job, state, order: list[int], scan_records: dict[int,
                                                adjusted_rpy_deg=list(nodes[k]))
     keys = ("rms_before_m", "rms_m", "n_ties", "n_used", "rebuild")
     out = {key: unit[key] for key in keys}
-    if refined is not None:
-        out["refined"] = {key: refined[key] for key in keys}
+    out["refined"] = None if refined is None else {key: refined[key] for key in keys}
     return out
