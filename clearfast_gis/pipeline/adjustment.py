@@ -51,7 +51,12 @@ def _finite_or_none(v: float) -> float | None:
 
 def stored_model(state) -> tuple[np.ndarray, np.ndarray] | None:
     """The adjusted attitude recorded in the run state (the refined one once it exists), if
-    the adjustment ran."""
+    the adjustment ran.
+
+    Scans that the refined adjustment left in place (it moves none of their frames by more
+    than :data:`ADJUST_MIN_DEG`) keep the first adjustment's placement; the refined model
+    describes them to within that bound.
+    """
     unit = state.done(REFINED_UNIT) or state.done(UNIT)
     if unit is None:
         return None
