@@ -165,7 +165,7 @@ def adjust_survey_attitude(job, state, order: list[int], scan_records: dict[int,
                            refine: bool = True) -> dict:
     """Adjust the attitude of every scan at once and mosaic again the scans it moves; then
     (``refine``) tie every scan to its neighbours in time on those mosaics, adjust again and
-    mosaic again the scans that moves.
+    mosaic again the scans that this moves.
 
     Parameters
     ----------
