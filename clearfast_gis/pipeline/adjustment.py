@@ -59,7 +59,12 @@ def _finite_or_none(v: float) -> float | None:
 
 def stored_model(state) -> tuple[np.ndarray, np.ndarray] | None:
     """The adjusted attitude recorded in the run state (the refined one once it exists), if
-    the adjustment ran."""
+    the adjustment ran.
+
+    Scans that the refined adjustment left in place (it moves none of their frames by more
+    than :data:`ADJUST_MIN_DEG`) keep the first adjustment's placement; the refined model
+    describes them to within that bound.
+    """
     unit = state.done(REFINED_UNIT) or state.done(UNIT)
     if unit is None:
         return None
@@ -167,7 +172,7 @@ def adjust_survey_attitude(job, state, order: list[int], scan_records: dict[int,
                            refine: bool | None = None) -> dict:
     """Adjust the attitude of every scan at once and mosaic again the scans it moves; then
     (``refine``) tie every scan to its neighbours in time on those mosaics, adjust again and
-    mosaic again the scans that moves.
+    mosaic again the scans that this moves.
 
     Parameters
     ----------
