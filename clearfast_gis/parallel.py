@@ -42,8 +42,11 @@ def thread_map(fn: Callable[[T], R], items: Iterable[T], threads: int | None = N
     n = n_threads() if threads is None else max(1, int(threads))
     if n == 1 or len(items) < 2:
         return [fn(x) for x in items]
-    with ThreadPoolExecutor(min(n, len(items)), thread_name_prefix="clearfast") as pool:
+    pool = ThreadPoolExecutor(min(n, len(items)), thread_name_prefix="clearfast")
+    try:
         return list(pool.map(fn, items))
+    finally:  # on an error or Ctrl-C, the calls not started are dropped, not waited for
+        pool.shutdown(wait=True, cancel_futures=True)
 
 
 def thread_imap(fn: Callable[[T], R], items: Iterable[T], threads: int | None = None,

@@ -54,3 +54,18 @@ def test_thread_cap_from_environment(monkeypatch):
     assert thread_map(lambda x: threading.get_ident(), range(4)) == [threading.get_ident()] * 4
     monkeypatch.setenv("CLEARFAST_THREADS", "junk")
     assert 1 <= n_threads() <= 4
+
+
+def test_an_error_drops_the_calls_not_started():
+    started = []
+
+    def f(x):
+        started.append(x)
+        if x == 0:
+            raise RuntimeError("stop")
+        time.sleep(0.05)
+        return x
+
+    with pytest.raises(RuntimeError, match="stop"):
+        thread_map(f, range(200), threads=2)
+    assert len(started) < 20  # not the 200
