@@ -6,7 +6,7 @@ import numpy as np
 
 from clearfast_gis.mosaic.adjust import LinearTie, adjust_attitudes, attitude_at
 from clearfast_gis.parallel import thread_map
-from clearfast_gis.pipeline.attitude import mosaic_ties
+from clearfast_gis.pipeline.attitude import frame_windows, mosaic_ties
 from clearfast_gis.progress import Progress
 
 ADJUST_MIN_DEG = 0.01
@@ -111,6 +111,7 @@ def neighbour_ties(job, order: list[int], scan_records: dict[int, dict],
     list of LinearTie
     """
     reach = max(abs(o) for o in offsets)
+    n_samples = job.options.attitude_samples
     loaded: dict[int, object] = {}
     ties: list[LinearTie] = []
     pairs = neighbour_pairs(order, offsets)
@@ -122,9 +123,10 @@ def neighbour_ties(job, order: list[int], scan_records: dict[int, dict],
         for n in keep - set(loaded):
             loaded[n] = job.reference(n, scan_records[n], model)
         others = [n for m, n in pairs if m == s]
-        for found in thread_map(lambda other, here=loaded[s], near=loaded: mosaic_ties(
-                here, near[other], job.ctx.camera, job.grid,
-                n_samples=job.options.attitude_samples), others):
+        windows = frame_windows(loaded[s].source, n_samples)  # shared by the neighbours
+        for found in thread_map(lambda other, here=loaded[s], near=loaded, w=windows:
+                                mosaic_ties(here, near[other], job.ctx.camera, job.grid,
+                                            n_samples=n_samples, windows=w), others):
             ties += found
         if progress is not None:
             progress.advance(1, scan=s)

@@ -252,7 +252,8 @@ def frame_windows(source: np.ndarray, n_samples: int, min_cells: int = 400
 
 
 def mosaic_ties(scan: ReferenceMosaic, other: ReferenceMosaic, camera, grid: GroundGrid,
-                n_samples: int = 40, max_shift_m: float = 0.2, min_overlap: float = 0.5
+                n_samples: int = 40, max_shift_m: float = 0.2, min_overlap: float = 0.5,
+                windows: list[tuple[int, tuple[slice, slice]]] | None = None
                 ) -> list[LinearTie]:
     """Ties between two placed scans, measured mosaic against mosaic.
 
@@ -275,6 +276,9 @@ def mosaic_ties(scan: ReferenceMosaic, other: ReferenceMosaic, camera, grid: Gro
         Largest shift searched, metres.
     min_overlap : float
         Fraction of a frame's cells that ``other`` must cover.
+    windows : list, optional
+        ``frame_windows(scan.source, n_samples)``, when the caller ties ``scan`` to several
+        others (computed here otherwise).
 
     Returns
     -------
@@ -283,7 +287,9 @@ def mosaic_ties(scan: ReferenceMosaic, other: ReferenceMosaic, camera, grid: Gro
     """
     ps = grid.pixel_size
     out: list[LinearTie] = []
-    for pos, (rs, cs) in frame_windows(scan.source, n_samples):
+    if windows is None:
+        windows = frame_windows(scan.source, n_samples)
+    for pos, (rs, cs) in windows:
         mask = scan.source[rs, cs] == pos
         fixed = other.values[0][rs, cs]
         if np.count_nonzero(mask & np.isfinite(fixed)) < min_overlap * np.count_nonzero(mask):

@@ -299,19 +299,18 @@ class _ScanJob:
         """Apparent-temperature frames of ``scan``, computing the planned next scan's
         meanwhile."""
         pending = self._pending.pop(scan, None)
-        if pending is not None:
-            frames = pending.result()
-        else:
-            frames = list(scan_frames(self.ctx, scan, self.air_at,
-                                      atmosphere=self.options.atmosphere))
+        frames = pending.result() if pending is not None else self._frames(scan)
         if scan in self._plan:
             k = self._plan.index(scan)
             if k + 1 < len(self._plan) and self._plan[k + 1] not in self._pending:
                 nxt = self._plan[k + 1]
-                self._pending[nxt] = self._pool.submit(
-                    lambda: list(scan_frames(self.ctx, nxt, self.air_at,
-                                             atmosphere=self.options.atmosphere)))
+                self._pending[nxt] = self._pool.submit(self._frames, nxt)
         return frames
+
+    def _frames(self, scan: int) -> list:
+        """All apparent-temperature frames of ``scan`` (:func:`scan_frames`)."""
+        return list(scan_frames(self.ctx, scan, self.air_at,
+                                atmosphere=self.options.atmosphere))
 
     def frame_times(self, scan: int, frames) -> np.ndarray:
         """Time (UTC epoch s) of each frame of ``frames`` (band 0 of its position)."""
