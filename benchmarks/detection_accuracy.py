@@ -3,7 +3,10 @@
 Simulates surveys (``--preset``, ``--seeds``, optionally ``--drift``), processes each, and
 scores the suspects against ``truth/objects.csv``: detection probability for mines
 surface-laid or buried <= 5 cm, false alarms (suspects cued as mines that match no mine) per
-m2 of footprint, centre error, diameter error, depth error of characterised mines. With
+m2 of footprint, centre error, diameter error, depth error of characterised mines; the scans'
+residual misregistration against the reference scan as the chain measured it on the mosaics
+(``products.json``) and as the placement errors against the true poses make it
+(:func:`~clearfast_gis.pipeline.truth.placement_errors`). With
 ``--sweep`` it also re-runs the detector over a small grid of (epsilon, level) on the same
 mosaics (without the thermal characterisation) to show the trade-off.
 
@@ -23,12 +26,20 @@ from pathlib import Path
 import numpy as np
 
 from clearfast_gis.pipeline import ProcessOptions, process_survey, redetect
-from clearfast_gis.pipeline.truth import score_against_truth
+from clearfast_gis.pipeline.truth import placement_errors, score_against_truth
 from clearfast_gis.simulate import preset, simulate_survey
 
 
 def rms(v):
     return float(np.sqrt(np.mean(np.square(v)))) if len(v) else float("nan")
+
+
+def _spread(v) -> str:
+    """'median / max (n above 0.5)' of residuals in pixels."""
+    v = np.asarray(v, dtype=float)
+    if not v.size:
+        return "n/a"
+    return f"{np.median(v):.2f} / {v.max():.2f} ({int(np.sum(v > 0.5))})"
 
 
 def main() -> None:
@@ -54,7 +65,8 @@ def main() -> None:
         t_proc = time.perf_counter() - t0
         s = score_against_truth(survey, products)
         res = [r["residual_px"] for r in manifest["scans"] if r.get("residual_px") is not None]
-        rows.append((tag, s, t_sim, t_proc, manifest.get("markers", {}), res))
+        rows.append((tag, s, t_sim, t_proc, manifest.get("markers", {}), res,
+                     placement_errors(survey, products)))
         if args.sweep:
             for eps in (0.005, 0.01, 0.02):
                 for frac in (0.25, 0.5):
@@ -66,15 +78,22 @@ def main() -> None:
                                                                                   products))
             process_survey(survey, products, ProcessOptions())  # restore the defaults
     print("| survey | Pd (<= 5 cm) | FA/m2 | centre RMS cm | diameter RMS % | depth RMS cm "
-          "(n) | markers RMS cm | scan residual max px | simulate s | process s |")
-    print("|---|---|---|---|---|---|---|---|---|---|")
-    for tag, s, ts, tp, mk, res in rows:
+          "(n) | markers RMS cm | residual vs reference px, measured (median / max, > 0.5) "
+          "| misregistration from the true poses px, RMS over the cells (median / max, > 0.5) "
+          "| placement RMS cm "
+          "(worst scan) | simulate s | process s |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|")
+    for tag, s, ts, tp, mk, res, pl in rows:
         mrms = mk.get("rms_offset_m")
+        rel = np.array([v for v in pl.relative_px if np.isfinite(v)])
+        absm = np.array(pl.abs_rms_m)
         print(f"| {tag} | {s.n_detected}/{s.n_mines} = {s.detection_probability:.2f} | "
               f"{s.false_alarms_per_m2:.3f} | {100 * rms(s.centre_errors_m):.1f} | "
               f"{100 * rms(s.diameter_rel_errors):.0f} | {100 * rms(s.depth_errors_m):.2f} "
               f"({len(s.depth_errors_m)}) | {'-' if mrms is None else f'{100 * mrms:.1f}'} | "
-              f"{max(res) if res else float('nan'):.2f} | {ts:.0f} | {tp:.0f} |")
+              f"{_spread(res)} | {_spread(rel)} | "
+              f"{100 * np.sqrt(np.mean(absm ** 2)):.2f} ({100 * absm.max():.2f}) | "
+              f"{ts:.0f} | {tp:.0f} |")
     for tag, s, *_ in rows:
         if s.missed:
             print(f"\n{tag} missed: {', '.join(s.missed)}")

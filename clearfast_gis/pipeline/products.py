@@ -235,14 +235,15 @@ def base_manifest(survey, epsg: int, options, scan_records: dict[int, dict], fix
     """The products manifest common to every stage: inputs, parameters, scans, CRS.
 
     Each scan records its time, file, the residual misregistration against the reference
-    scan (pixels), the platform attitude fitted for it with the ties behind the fit, and how
-    many frames an individual MI correction moved.
+    scan (pixels) and that scan's number, the platform attitude fitted for it with the ties
+    behind the fit, and how many frames an individual MI correction moved.
     """
     from clearfast_gis.export.manifest import sha256_file
 
     scans = [{"scan": int(s), "time_utc": format_utc(r["time_s"]),
               "file": f"mosaics/scan_{int(s):03d}.tif",
               "residual_px": r.get("residual_px"),
+              "reference_scan": r.get("reference_scan"),
               "attitude": r.get("attitude"),
               "frames_corrected": sum(1 for c in r.get("corrections", {}).values()
                                       if c.get("applied"))}

@@ -138,3 +138,206 @@ def score_against_truth(survey: str | Path, products: str | Path, max_depth_m: f
     fa = [i for i in range(len(sus)) if cue[i] in MINE_CUES and i not in matched_suspects]
     score.n_false_alarms = len(fa)
     return score
+
+
+@dataclass
+class PlacementScore:
+    """How the chain placed the thermal content on the mosaic grid, against the true poses.
+
+    For a lattice of mosaic cells, the ground point whose radiance each cell actually holds is
+    traced back through the cell's source frame: the chain put the cell's value from frame
+    pixel (u, v) of that frame, placed with its pose; the true pose says which ground point
+    that pixel saw. The difference is the content's displacement at the cell.
+
+    Attributes
+    ----------
+    scans : list of int
+        Scans in the products, in order.
+    reference_scan : int
+        The scan the temporal mosaics were co-registered to.
+    pixel_size_m : float
+        Mosaic cell size, metres.
+    abs_rms_m : list of float
+        Per scan, RMS displacement of the content over its cells, metres (absolute placement).
+    relative_px : list of float
+        Per scan, RMS over the cells both scans cover of the difference between the scan's
+        displacement and the reference scan's, mosaic pixels: the scan-to-reference
+        misregistration, cell by cell. NaN for the reference scan and for a scan that
+        overlaps it nowhere.
+    relative_rigid_px : list of float
+        The rotation-and-shift part of that difference (:func:`rigid_residual_px`), the
+        quantity :func:`clearfast_gis.mosaic.temporal_residual` estimates from the images.
+    """
+
+    scans: list[int]
+    reference_scan: int
+    pixel_size_m: float
+    abs_rms_m: list[float]
+    relative_px: list[float]
+    relative_rigid_px: list[float]
+
+
+def read_true_poses(folder: str | Path, band: int = 0) -> dict[tuple[int, int], object]:
+    """True camera poses of ``truth/poses.csv``, by (scan, position), for one band.
+
+    Returns
+    -------
+    dict (scan, position) -> CameraPose
+        Camera centre in the survey CRS (metres), pan/tilt angles and platform attitude in
+        degrees.
+    """
+    from clearfast_gis.geometry.pose import CameraPose
+
+    out = {}
+    with open(Path(folder) / "truth" / "poses.csv", newline="") as fh:
+        for r in csv.DictReader(fh):
+            if int(r["band"]) != band:
+                continue
+            out[(int(r["scan"]), int(r["position"]))] = CameraPose(
+                np.array([float(r["e_m"]), float(r["n_m"]), float(r["z_m"])]),
+                float(r["azimuth_deg"]), float(r["elevation_deg"]),
+                (float(r["roll_deg"]), float(r["pitch_deg"]), float(r["yaw_deg"])))
+    return out
+
+
+def rigid_residual_px(points_m: np.ndarray, displacement_m: np.ndarray,
+                      pixel_size_m: float) -> float:
+    """RMS displacement (pixels) of the rotation and shift that best explains a field.
+
+    Parameters
+    ----------
+    points_m : float (N, 2)
+        Ground positions, metres.
+    displacement_m : float (N, 2)
+        Displacement at those positions, metres.
+    pixel_size_m : float
+
+    Returns
+    -------
+    float
+        RMS over the N points of the fitted (small-angle) rigid motion's displacement, pixels;
+        NaN for fewer than 3 points.
+    """
+    x = np.asarray(points_m, dtype=float)
+    d = np.asarray(displacement_m, dtype=float)
+    if len(x) < 3:
+        return math.nan
+    xc = x - x.mean(axis=0)
+    a = np.zeros((2 * len(x), 3))
+    a[0::2, 0] = 1.0
+    a[1::2, 1] = 1.0
+    a[0::2, 2] = -xc[:, 1]
+    a[1::2, 2] = xc[:, 0]
+    p = np.linalg.lstsq(a, d.ravel(), rcond=None)[0]
+    fit = (a @ p).reshape(-1, 2)
+    return float(np.sqrt(np.mean(np.sum(fit * fit, axis=1)))) / pixel_size_m
+
+
+def content_displacement(camera, cells_xy: np.ndarray, placed, true) -> np.ndarray:
+    """Displacement (N, 2), metres, of the content a frame put at ground cells.
+
+    Parameters
+    ----------
+    camera : EquiangularCamera or PinholeCamera
+    cells_xy : float (N, 2)
+        Cell centres (metres, survey CRS) that took their value from this frame.
+    placed, true : CameraPose
+        The pose the frame was projected with, and the pose it was taken from.
+
+    Returns
+    -------
+    float (N, 2)
+        Cell minus the ground point the true pose saw at the frame pixel the cell was
+        sampled from (NaN where that pixel sees no ground).
+    """
+    pts = np.column_stack([cells_xy, np.zeros(len(cells_xy))])
+    uv = camera.project(pts, placed)
+    seen = camera.ground_points(uv[:, 0], uv[:, 1], true)[:, :2]
+    return cells_xy - seen
+
+
+def placement_errors(survey: str | Path, products: str | Path, step_px: int = 8,
+                     reference_scan: int | None = None) -> PlacementScore:
+    """Score where the chain put the thermal content of a processed simulated survey against
+    its true poses (``truth/poses.csv``), cell by cell (:class:`PlacementScore`).
+
+    Every ``step_px``-th cell of each scan's mosaic (both directions) is traced through its
+    source frame (``.clearfast/source_NNN.npy``), placed as the chain placed it: GNSS track,
+    pan/tilt, mount calibration and the attitude recorded in the run state (the scan's own fit
+    or the survey-wide adjustment it was projected with).
+
+    Parameters
+    ----------
+    survey, products : path
+        The simulated survey and its processed products (mosaics stage at least).
+    step_px : int
+        Cell sampling step.
+    reference_scan : int, optional
+        The scan to compute the relative residuals against; default: the reference scan
+        recorded in ``products.json``.
+
+    Returns
+    -------
+    PlacementScore
+    """
+    import json
+
+    import rasterio
+
+    from clearfast_gis.pipeline.adjustment import REFINED_UNIT, UNIT, placement_attitude
+    from clearfast_gis.pipeline.frames import frame_poses
+    from clearfast_gis.pipeline.run import mosaic_rel, open_context
+    from clearfast_gis.pipeline.state import STATE_DIR
+
+    products = Path(products)
+    manifest = json.loads((products / "products.json").read_text())
+    units = json.loads((products / STATE_DIR / "state.json").read_text())["units"]
+    models = {level: (np.array(units[u]["node_times_s"], dtype=float),
+                      np.array(units[u]["nodes_rpy_deg"], dtype=float))
+              for level, u in ((1, UNIT), (2, REFINED_UNIT)) if u in units}
+    scans = [int(r["scan"]) for r in manifest["scans"]]
+    if reference_scan is None:
+        refs = {r.get("reference_scan") for r in manifest["scans"]} - {None}
+        if len(refs) != 1:
+            raise ValueError(f"{products / 'products.json'}: no single reference scan recorded")
+        reference_scan = int(refs.pop())
+    ref = int(reference_scan)
+    with rasterio.open(products / mosaic_rel(ref)) as ds:
+        transform, shape = ds.transform, ds.shape
+    pixel = float(transform.a)
+    rows, cols = np.mgrid[step_px // 2:shape[0]:step_px, step_px // 2:shape[1]:step_px]
+    cells = np.column_stack([transform.c + (cols.ravel() + 0.5) * transform.a,
+                             transform.f + (rows.ravel() + 0.5) * transform.e])
+    ctx, _, _ = open_context(survey)
+    truth = read_true_poses(survey)
+    cam, fr = ctx.camera, ctx.survey.frames
+    disp = {}
+    for s in scans:
+        source = np.load(products / STATE_DIR / f"source_{s:03d}.npy")[rows, cols].ravel()
+        rec = units[f"scan_{s:03d}"]
+        frame_rows = ctx.survey.scan_rows(s, 0)
+        frame_rows = frame_rows[np.isin(fr.position[frame_rows], np.unique(source))]
+        t = fr.time_s[frame_rows]
+        att = placement_attitude(rec, models.get(int(rec.get("adjusted") or 0)), t)
+        d = np.full((len(cells), 2), np.nan)
+        for r, pose, a in zip(frame_rows, frame_poses(ctx, t, fr.pan_deg[frame_rows],
+                                                       fr.tilt_deg[frame_rows]), att,
+                              strict=True):
+            position = int(fr.position[r])
+            sel = source == position
+            d[sel] = content_displacement(cam, cells[sel], pose.with_attitude(tuple(a)),
+                                          truth[(s, position)])
+        disp[s] = d
+    abs_rms, rel, rigid = [], [], []
+    for s in scans:
+        d = disp[s][np.all(np.isfinite(disp[s]), axis=1)]
+        abs_rms.append(float(np.sqrt(np.mean(np.sum(d * d, axis=1)))) if len(d) else math.nan)
+        diff = disp[s] - disp[ref]
+        ok = np.all(np.isfinite(diff), axis=1)
+        if s == ref or not ok.any():
+            rel.append(math.nan)
+            rigid.append(math.nan)
+            continue
+        rel.append(float(np.sqrt(np.mean(np.sum(diff[ok] ** 2, axis=1)))) / pixel)
+        rigid.append(rigid_residual_px(cells[ok], diff[ok], pixel))
+    return PlacementScore(scans, ref, pixel, abs_rms, rel, rigid)

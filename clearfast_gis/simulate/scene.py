@@ -101,6 +101,23 @@ def _ellipse_cover(xx: np.ndarray, yy: np.ndarray, obj: SceneObject, x_c: float,
     return np.clip(0.5 - dist_m / soft_m, 0.0, 1.0).astype(np.float32)
 
 
+def _box_cover(xx: np.ndarray, yy: np.ndarray, x_c: float, y_c: float, half_m: float,
+               cell_m: float) -> np.ndarray:
+    """Fraction of each cell (centres ``xx``, ``yy``, metres) covered by the square plate of
+    half-side ``half_m`` centred on (``x_c``, ``y_c``).
+
+    Exact area coverage: the plate's cover-weighted centroid is its centre whatever the plate's
+    position on the grid (a test of cell centres against the edges would take or leave a whole
+    row of cells when an edge falls on a row of centres, moving the plate by half a cell).
+    """
+    def overlap(c: np.ndarray, centre: float) -> np.ndarray:
+        lo = np.maximum(c - 0.5 * cell_m, centre - half_m)
+        hi = np.minimum(c + 0.5 * cell_m, centre + half_m)
+        return np.clip((hi - lo) / cell_m, 0.0, 1.0)
+
+    return (overlap(xx, x_c) * overlap(yy, y_c)).astype(np.float32)
+
+
 def build_scene(grid: GridSpec, objects: list[SceneObject], origin_m: tuple[float, float],
                 rng: np.random.Generator) -> SceneFields:
     """Rasterise the scene's objects and draw the moisture field.
@@ -146,10 +163,9 @@ def build_scene(grid: GridSpec, objects: list[SceneObject], origin_m: tuple[floa
             target = fields.vegetation if obj.kind == "vegetation" else fields.disturbed
             target[win] = np.maximum(target[win], cover)
         elif obj.kind == "marker":
-            half = obj.radius_m
-            inside = (np.abs(xx - xc) <= half) & (np.abs(yy - yc) <= half)
+            cover = _box_cover(xx, yy, xc, yc, obj.radius_m, ps)
             target = fields.marker_hot if obj.variant != "cold" else fields.marker_cold
-            target[win] = np.maximum(target[win], inside.astype(np.float32))
+            target[win] = np.maximum(target[win], cover)
         else:
             r = np.hypot(xx - xc, yy - yc)
             keep = r <= obj.radius_m + FOOTPRINT_MARGIN_M

@@ -4,6 +4,8 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from clearfast_gis.geometry.cameras import EquiangularCamera, PinholeCamera
 from clearfast_gis.geometry.pose import pose_from_ptu
@@ -11,10 +13,11 @@ from clearfast_gis.radiometry.table import BandTable
 from clearfast_gis.simulate.config import preset
 from clearfast_gis.simulate.detector import make_detector
 from clearfast_gis.simulate.emissivity import band_emissivity
+from clearfast_gis.simulate.objects import SceneObject
 from clearfast_gis.simulate.platform import RTK_FIXED_SIGMA_M, gnss_epochs, lift_motion
 from clearfast_gis.simulate.rays import FrameRays
 from clearfast_gis.simulate.render import radiance_grid, surface_radiance_frame
-from clearfast_gis.simulate.scene import GridSpec, smooth_random_field
+from clearfast_gis.simulate.scene import GridSpec, build_scene, smooth_random_field
 from clearfast_gis.simulate.sky import sky_band_emissivity
 from clearfast_gis.simulate.thin_layers import leaf_temperature_k, plate_temperature_k
 from clearfast_gis.units import STEFAN_BOLTZMANN as SIGMA
@@ -146,3 +149,24 @@ def test_frame_rays_match_camera_rays(model, attitude):
     ref = cam.rays(uu.ravel() + shift[0], vv.ravel() + shift[1], pose)
     np.testing.assert_allclose(np.stack([dx.ravel(), dy.ravel(), dz.ravel()], axis=1), ref,
                                atol=1e-12)
+
+
+@given(st.floats(0.0, 1.0), st.floats(0.0, 1.0), st.sampled_from([0.3, 0.5]))
+@settings(max_examples=25, deadline=None)
+def test_marker_plate_is_rasterised_where_the_truth_says(fx, fy, side_m):
+    """The plate's cover-weighted centroid and area are the object's, wherever its edges fall
+    on the grid (also exactly on a row of cell centres, as with 0.3 m plates on a 2 cm grid
+    whose centres are at odd centimetres)."""
+    grid = GridSpec(532760.0, 3891970.0, 0.02, 150, 150, 32636)
+    obj = SceneObject(id="MK01", kind="marker", x_m=1.0 + 0.02 * fx, y_m=1.0 + 0.02 * fy,
+                      depth_m=0.0, diameter_m=side_m, variant="cold")
+    origin = (532760.0, 3891967.0)
+    fields = build_scene(grid, [obj], origin, np.random.default_rng(0))
+    cover = fields.marker_cold.astype(np.float64)
+    xs, ys = grid.cell_centres()
+    area = cover.sum() * grid.pixel_size ** 2
+    assert area == pytest.approx(side_m ** 2, rel=1e-5)
+    assert (cover * xs[None, :]).sum() / cover.sum() == pytest.approx(origin[0] + obj.x_m,
+                                                                       abs=1e-6)
+    assert (cover * ys[:, None]).sum() / cover.sum() == pytest.approx(origin[1] + obj.y_m,
+                                                                       abs=1e-6)
