@@ -9,7 +9,7 @@ from clearfast_gis.mosaic.grid import mosaic_grid
 from clearfast_gis.mosaic.insert import MosaicCanvas
 from clearfast_gis.mosaic.project import ProjectedFrame, project_frame
 from clearfast_gis.mosaic.seams import fit_linear_histogram_mapping
-from clearfast_gis.mosaic.temporal import TemporalResidual, temporal_residual
+from clearfast_gis.mosaic.temporal import TemporalResidual, temporal_residual, temporal_transform
 
 __all__ = [
     "FrameInput",
@@ -22,4 +22,5 @@ __all__ = [
     "mosaic_grid",
     "project_frame",
     "temporal_residual",
+    "temporal_transform",
 ]

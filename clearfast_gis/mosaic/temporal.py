@@ -34,6 +34,28 @@ class TemporalResidual:
     metric: float
 
 
+def temporal_transform(reference: np.ndarray, mosaic: np.ndarray, max_shift_px: float = 20.0):
+    """Register a scan's whole mosaic to the reference scan's (rotation and shift, mutual
+    information).
+
+    Parameters
+    ----------
+    reference, mosaic : float32 (H, W)
+        One band of the reference scan's mosaic and of the scan's mosaic on the same grid,
+        NaN where empty.
+    max_shift_px : float
+        Search bound, mosaic pixels (rotation within 2 degrees).
+
+    Returns
+    -------
+    ConformalTransform
+        From reference pixel coordinates to the scan's (``converged`` False when the
+        registration is not trustworthy).
+    """
+    return register_conformal(reference, mosaic, max_shift_px=max_shift_px, max_angle_deg=2.0,
+                              bins=32)
+
+
 def temporal_residual(reference: np.ndarray, mosaic: np.ndarray, max_shift_px: float = 20.0
                       ) -> TemporalResidual:
     """Register ``mosaic`` to ``reference`` once more and measure what is left.
@@ -49,8 +71,7 @@ def temporal_residual(reference: np.ndarray, mosaic: np.ndarray, max_shift_px: f
     -------
     TemporalResidual
     """
-    t = register_conformal(reference, mosaic, max_shift_px=max_shift_px, max_angle_deg=2.0,
-                           bins=32)
+    t = temporal_transform(reference, mosaic, max_shift_px)
     if not t.converged:
         return TemporalResidual(math.nan, math.nan, False, t.metric)
     both = np.isfinite(reference) & np.isfinite(mosaic)

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from clearfast_gis.mosaic import temporal_transform
 from clearfast_gis.mosaic.adjust import LinearTie, adjust_attitudes, attitude_at
 from clearfast_gis.parallel import thread_map
 from clearfast_gis.pipeline.attitude import frame_windows, mosaic_ties
@@ -90,8 +91,16 @@ def neighbour_pairs(order: list[int], offsets: tuple[int, ...] = NEIGHBOUR_OFFSE
 def neighbour_ties(job, order: list[int], scan_records: dict[int, dict],
                    model: tuple[np.ndarray, np.ndarray] | None,
                    offsets: tuple[int, ...] = NEIGHBOUR_OFFSETS,
-                   progress: Progress | None = None) -> list[LinearTie]:
-    """Ties of every scan to its neighbours in time, measured on the placed mosaics.
+                   progress: Progress | None = None,
+                   reference_scan: int | None = None) -> list[LinearTie]:
+    """Ties of every scan to its neighbours in time, measured on the placed mosaics; and to
+    the reference scan, from the registration of the two whole mosaics.
+
+    Neighbours are close in time and alike, so a frame's window registers well against them;
+    but a chain of neighbours drifts over the hours between a night scan and the noon
+    reference. Against the reference each scan's whole mosaic is registered at once
+    (:func:`clearfast_gis.mosaic.temporal_transform`, as the residual is measured), which stays
+    precise across the day/night contrast inversion where a single window does not.
 
     Parameters
     ----------
@@ -105,12 +114,17 @@ def neighbour_ties(job, order: list[int], scan_records: dict[int, dict],
     offsets : tuple of int
         Neighbours tied, as steps along ``order``.
     progress : Progress, optional
+    reference_scan : int, optional
+        The scan the temporal mosaics are co-registered to; None: no ties to it beyond the
+        neighbours'.
 
     Returns
     -------
     list of LinearTie
     """
     reach = max(abs(o) for o in offsets)
+    reference = None if reference_scan is None else \
+        job.reference(reference_scan, scan_records[reference_scan], model)
     n_samples = job.options.attitude_samples
     loaded: dict[int, object] = {}
     ties: list[LinearTie] = []
@@ -128,6 +142,11 @@ def neighbour_ties(job, order: list[int], scan_records: dict[int, dict],
                                 mosaic_ties(here, near[other], job.ctx.camera, job.grid,
                                             n_samples=n_samples, windows=w), others):
             ties += found
+        if reference is not None and s != reference_scan:
+            whole = temporal_transform(reference.values[0], loaded[s].values[0])
+            if whole.converged:
+                ties += mosaic_ties(loaded[s], reference, job.ctx.camera, job.grid,
+                                    n_samples=n_samples, windows=windows, transform=whole)
         if progress is not None:
             progress.advance(1, scan=s)
     if progress is not None:
@@ -171,10 +190,11 @@ def _rebuild(job, unit: dict, level: int, scan_records: dict[int, dict],
 
 def adjust_survey_attitude(job, state, order: list[int], scan_records: dict[int, dict],
                            attitudes: dict[int, tuple], progress: Progress,
-                           refine: bool | None = None) -> dict:
+                           refine: bool | None = None, reference_scan: int | None = None
+                           ) -> dict:
     """Adjust the attitude of every scan at once and mosaic again the scans it moves; then
-    (``refine``) tie every scan to its neighbours in time on those mosaics, adjust again and
-    mosaic again the scans that this moves.
+    (``refine``) tie every scan to its neighbours in time and to the reference scan on those
+    mosaics (:func:`neighbour_ties`), adjust again and mosaic again the scans that this moves.
 
     Parameters
     ----------
@@ -192,6 +212,9 @@ def adjust_survey_attitude(job, state, order: list[int], scan_records: dict[int,
     refine : bool or None
         Run the second, refined adjustment; None: when the first one re-projects at least
         :data:`REFINE_MIN_SHARE` of the scans.
+    reference_scan : int, optional
+        The scan the temporal mosaics are co-registered to (tied to every scan in the
+        refined adjustment).
 
     Returns
     -------
@@ -221,7 +244,8 @@ def adjust_survey_attitude(job, state, order: list[int], scan_records: dict[int,
         markers = [t for s in order for t in map(LinearTie.from_list,
                                                  scan_records[s].get("ties") or [])
                    if t.ref_scan is None]
-        ties = markers + neighbour_ties(job, order, scan_records, model, progress=progress)
+        ties = markers + neighbour_ties(job, order, scan_records, model, progress=progress,
+                                        reference_scan=reference_scan)
         refined = _fit(ties, order, node_times, prior, times,
                        {s: placement_attitude(scan_records[s], model, times[s])
                         for s in order})

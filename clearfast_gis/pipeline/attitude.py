@@ -18,7 +18,7 @@ from clearfast_gis.mosaic.attitude import GroundTie, fit_attitude, with_attitude
 from clearfast_gis.mosaic.coregister import coregister_projected
 from clearfast_gis.mosaic.markers import locate_marker
 from clearfast_gis.parallel import thread_map
-from clearfast_gis.registration import register_conformal
+from clearfast_gis.registration import ConformalTransform, register_conformal
 
 MARKER_WEIGHT = 5.0
 """Weight of a marker tie relative to an image-registration tie (markers are surveyed)."""
@@ -253,8 +253,8 @@ def frame_windows(source: np.ndarray, n_samples: int, min_cells: int = 400
 
 def mosaic_ties(scan: ReferenceMosaic, other: ReferenceMosaic, camera, grid: GroundGrid,
                 n_samples: int = 40, max_shift_m: float = 0.2, min_overlap: float = 0.5,
-                windows: list[tuple[int, tuple[slice, slice]]] | None = None
-                ) -> list[LinearTie]:
+                windows: list[tuple[int, tuple[slice, slice]]] | None = None,
+                transform: ConformalTransform | None = None) -> list[LinearTie]:
     """Ties between two placed scans, measured mosaic against mosaic.
 
     For a sample of ``scan``'s frames, the cells each frame supplies to ``scan``'s mosaic are
@@ -279,6 +279,12 @@ def mosaic_ties(scan: ReferenceMosaic, other: ReferenceMosaic, camera, grid: Gro
     windows : list, optional
         ``frame_windows(scan.source, n_samples)``, when the caller ties ``scan`` to several
         others (computed here otherwise).
+    transform : ConformalTransform, optional
+        The registration of the whole of ``scan``'s mosaic to ``other``'s, in mosaic pixels
+        (:func:`clearfast_gis.mosaic.temporal_transform`): when given, each sample frame's
+        shift is read from it at the frame's cells instead of registering the frame's window
+        alone (the whole mosaics hold far more texture than one window, which matters between
+        day and night).
 
     Returns
     -------
@@ -294,13 +300,17 @@ def mosaic_ties(scan: ReferenceMosaic, other: ReferenceMosaic, camera, grid: Gro
         fixed = other.values[0][rs, cs]
         if np.count_nonzero(mask & np.isfinite(fixed)) < min_overlap * np.count_nonzero(mask):
             continue
-        t = register_conformal(fixed, scan.values[0][rs, cs], moving_mask=mask,
-                               max_shift_px=max_shift_m / ps, max_angle_deg=0.0, bins=24)
-        if not t.converged:
-            continue
         rows, cols = np.nonzero(mask)
         centre = np.array([cols.mean(), rows.mean()])
-        du, dv = centre - t.apply(centre[None])[0]
+        if transform is None:
+            t = register_conformal(fixed, scan.values[0][rs, cs], moving_mask=mask,
+                                   max_shift_px=max_shift_m / ps, max_angle_deg=0.0, bins=24)
+            if not t.converged:
+                continue
+            du, dv = centre - t.apply(centre[None])[0]
+        else:
+            whole = centre + (cs.start, rs.start)
+            du, dv = whole - transform.apply(whole[None])[0]
         d = np.array([du * ps, -dv * ps])
         xc = grid.x0 + (cs.start + centre[0] + 0.5) * ps
         yc = grid.y0 - (rs.start + centre[1] + 0.5) * ps

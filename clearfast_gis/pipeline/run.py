@@ -540,7 +540,7 @@ def _process(survey_path: str | Path, products: Path, options: ProcessOptions, r
         if options.coregister and options.adjust_attitude:
             with meter.stage("attitude_adjustment"):
                 adjustment = adjust_survey_attitude(job, state, order, scan_records,
-                                                    attitudes, progress)
+                                                    attitudes, progress, reference_scan=ref)
     finally:
         job.close()
     with meter.stage("residuals_and_footprint"):
