@@ -12,7 +12,6 @@ the per-pixel slant range, the constant 20 m default, and no atmospheric correct
 from __future__ import annotations
 
 import argparse
-import csv
 import subprocess
 import sys
 import tempfile
@@ -23,7 +22,7 @@ import numpy as np
 import rasterio
 from scipy.ndimage import map_coordinates
 
-from clearfast_gis.geometry.pose import CameraPose
+from clearfast_gis.pipeline.truth import read_true_poses
 from clearfast_gis.radiometry.stage import (
     apparent_temperature_frames,
     band_table,
@@ -31,17 +30,6 @@ from clearfast_gis.radiometry.stage import (
     weather_at,
 )
 from clearfast_gis.survey import read_survey, read_toa5
-
-
-def true_poses(path: Path) -> dict[tuple[int, int, int], CameraPose]:
-    out = {}
-    with open(path, newline="") as fh:
-        for r in csv.DictReader(fh):
-            out[(int(r["scan"]), int(r["position"]), int(r["band"]))] = CameraPose(
-                np.array([float(r["e_m"]), float(r["n_m"]), float(r["z_m"])]),
-                float(r["azimuth_deg"]), float(r["elevation_deg"]),
-                (float(r["roll_deg"]), float(r["pitch_deg"]), float(r["yaw_deg"])))
-    return out
 
 
 def main() -> None:
@@ -58,7 +46,7 @@ def main() -> None:
                        check=True, capture_output=True)
     sim_s = time.perf_counter() - t0
     srv = read_survey(root)
-    poses = true_poses(root / "truth" / "poses.csv")
+    poses = read_true_poses(root)
     events = calibration_events(srv)
     weather = read_toa5(srv.path("weather"))
     info = srv.bands[0]

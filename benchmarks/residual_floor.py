@@ -37,7 +37,7 @@ from clearfast_gis.pipeline.truth import placement_errors, read_true_poses
 
 def true_pose_mosaic(ctx, scan: int, grid: GroundGrid, truth: dict) -> np.ndarray:
     """Band 0 of ``scan``'s mosaic (float32 (H, W), degrees C) projected with the true poses."""
-    frames = [FrameInput(f.index, f.values[:1], truth[(scan, f.index)])
+    frames = [FrameInput(f.index, f.values[:1], truth[(scan, f.index, 0)])
               for f in scan_frames(ctx, scan, _air_function(ctx))]
     return build_scan_mosaic(frames, ctx.camera, grid, 1, coregister=False).values[0]
 

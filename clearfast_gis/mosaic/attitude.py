@@ -44,18 +44,12 @@ class GroundTie:
     weight: float = 1.0
 
 
-def with_attitude(pose: CameraPose, attitude_rpy_deg: tuple[float, float, float]) -> CameraPose:
-    """The same pose with another platform attitude (on the same antenna position: see
-    :meth:`CameraPose.with_attitude`)."""
-    return pose.with_attitude(attitude_rpy_deg)
-
-
 def _predicted(camera, poses: list[CameraPose], ties: list[GroundTie],
                attitude: np.ndarray, base: np.ndarray) -> np.ndarray:
     """Ground displacement (K, 2) that changing ``base`` to ``attitude`` causes at the ties."""
     out = np.empty((len(ties), 2))
     for k, tie in enumerate(ties):
-        p0 = with_attitude(poses[tie.frame], tuple(base))
+        p0 = poses[tie.frame].with_attitude(base)
         out[k] = moved_point(camera, p0, tie.x, tie.y, attitude) - (tie.x, tie.y)
     return out
 

@@ -135,7 +135,8 @@ def neighbour_ties(job, order: list[int], scan_records: dict[int, dict],
         keep = set(order[max(0, k - reach):k + reach + 1])
         loaded = {n: m for n, m in loaded.items() if n in keep}
         for n in keep - set(loaded):
-            loaded[n] = job.reference(n, scan_records[n], model)
+            loaded[n] = reference if n == reference_scan else \
+                job.reference(n, scan_records[n], model)
         others = [n for m, n in pairs if m == s]
         windows = frame_windows(loaded[s].source, n_samples)  # shared by the neighbours
         for found in thread_map(lambda other, here=loaded[s], near=loaded, w=windows:

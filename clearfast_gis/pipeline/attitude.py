@@ -14,7 +14,7 @@ from clearfast_gis.geometry.pose import CameraPose
 from clearfast_gis.geometry.projection import frame_footprint
 from clearfast_gis.mosaic import FrameInput, build_scan_mosaic, project_frame
 from clearfast_gis.mosaic.adjust import LinearTie, attitude_at, displacement_jacobian
-from clearfast_gis.mosaic.attitude import GroundTie, fit_attitude, with_attitude
+from clearfast_gis.mosaic.attitude import GroundTie, fit_attitude
 from clearfast_gis.mosaic.coregister import coregister_projected
 from clearfast_gis.mosaic.markers import locate_marker
 from clearfast_gis.parallel import thread_map
@@ -90,7 +90,7 @@ def reposed(frames: list[FrameInput], attitude_rpy_deg) -> list[FrameInput]:
     att = np.asarray(attitude_rpy_deg, dtype=float)
     if att.ndim == 1:
         att = np.broadcast_to(att, (len(frames), 3))
-    return [FrameInput(f.index, f.values, with_attitude(f.pose, tuple(a)))
+    return [FrameInput(f.index, f.values, f.pose.with_attitude(a))
             for f, a in zip(frames, att, strict=True)]
 
 

@@ -22,7 +22,6 @@ from clearfast_gis.export.manifest import (
 from clearfast_gis.geometry.gnss import platform_track, smooth_static_track, utm_epsg_for
 from clearfast_gis.geometry.projection import frame_footprint
 from clearfast_gis.mosaic import build_scan_mosaic, mosaic_grid, temporal_residual
-from clearfast_gis.mosaic.attitude import with_attitude
 from clearfast_gis.mosaic.build import FrameCorrection
 from clearfast_gis.parallel import thread_imap
 from clearfast_gis.pipeline.adjustment import (
@@ -329,8 +328,8 @@ class _ScanJob:
         def frame_at(position: int):
             r = by_pos[position]
             t = float(fr.time_s[r])
-            return t, with_attitude(frame_pose(ctx, t, fr.pan_deg[r], fr.tilt_deg[r]),
-                                    tuple(placement_attitude(rec, model, np.array([t]))[0]))
+            return t, frame_pose(ctx, t, fr.pan_deg[r], fr.tilt_deg[r]).with_attitude(
+                placement_attitude(rec, model, np.array([t]))[0])
 
         if self._last is not None and self._last[0] == scan:
             values, source = self._last[1], self._last[2]

@@ -177,12 +177,12 @@ class PlacementScore:
     relative_rigid_px: list[float]
 
 
-def read_true_poses(folder: str | Path, band: int = 0) -> dict[tuple[int, int], object]:
-    """True camera poses of ``truth/poses.csv``, by (scan, position), for one band.
+def read_true_poses(folder: str | Path) -> dict[tuple[int, int, int], object]:
+    """True camera poses of a simulated survey's ``truth/poses.csv``.
 
     Returns
     -------
-    dict (scan, position) -> CameraPose
+    dict (scan, position, band) -> CameraPose
         Camera centre in the survey CRS (metres), pan/tilt angles and platform attitude in
         degrees.
     """
@@ -191,9 +191,7 @@ def read_true_poses(folder: str | Path, band: int = 0) -> dict[tuple[int, int], 
     out = {}
     with open(Path(folder) / "truth" / "poses.csv", newline="") as fh:
         for r in csv.DictReader(fh):
-            if int(r["band"]) != band:
-                continue
-            out[(int(r["scan"]), int(r["position"]))] = CameraPose(
+            out[(int(r["scan"]), int(r["position"]), int(r["band"]))] = CameraPose(
                 np.array([float(r["e_m"]), float(r["n_m"]), float(r["z_m"])]),
                 float(r["azimuth_deg"]), float(r["elevation_deg"]),
                 (float(r["roll_deg"]), float(r["pitch_deg"]), float(r["yaw_deg"])))
@@ -326,7 +324,7 @@ def placement_errors(survey: str | Path, products: str | Path, step_px: int = 8,
             position = int(fr.position[r])
             sel = source == position
             d[sel] = content_displacement(cam, cells[sel], pose.with_attitude(tuple(a)),
-                                          truth[(s, position)])
+                                          truth[(s, position, 0)])
         disp[s] = d
     abs_rms, rel, rigid = [], [], []
     for s in scans:
