@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["stretch_limits", "stretch", "stretch_threshold"]
+__all__ = ["inverted_cdf_rank", "stretch_limits", "stretch", "stretch_threshold"]
 
 
 def stretch_limits(image: np.ndarray, epsilon: float = 0.01) -> tuple[float, float]:
@@ -27,12 +27,28 @@ def stretch_limits(image: np.ndarray, epsilon: float = 0.01) -> tuple[float, flo
     """
     if not 0.0 <= epsilon < 0.5:
         raise ValueError(f"epsilon must be in [0, 0.5), got {epsilon}")
-    values = np.asarray(image, dtype=np.float64).ravel()
+    values = np.asarray(image)
+    if values.dtype not in (np.float32, np.float64):
+        values = values.astype(np.float64)
+    values = values.ravel()
     values = values[np.isfinite(values)]
     if values.size == 0:
         return float("nan"), float("nan")
-    lo, hi = np.quantile(values, [epsilon, 1.0 - epsilon], method="inverted_cdf")
-    return float(lo), float(hi)
+    # select the two ranks (no float64 copy, no full sort)
+    ranks = [inverted_cdf_rank(values.size, epsilon),
+             inverted_cdf_rank(values.size, 1.0 - epsilon)]
+    part = np.partition(values, ranks)
+    return float(part[ranks[0]]), float(part[ranks[1]])
+
+
+def inverted_cdf_rank(n: int, q: float) -> int:
+    """Rank (0-based, in sorted order) of the ``q`` quantile of ``n`` values by the inverted
+    empirical CDF: the smallest value whose cumulative frequency reaches ``q``. The
+    arithmetic of ``np.quantile(..., method="inverted_cdf")``, so the value is the same."""
+    index = n * q - 1.0
+    below = np.floor(index)
+    rank = below + 1.0 if index - below > 0.0 else below
+    return int(min(max(rank, 0.0), n - 1))
 
 
 def stretch(image: np.ndarray, lo: float, hi: float) -> np.ndarray:

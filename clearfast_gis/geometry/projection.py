@@ -80,7 +80,7 @@ def _pinhole_maps(xs, ys, z, c, rot, fx, fy, cx, cy, dist, width, height,
 
 
 def ground_maps(camera: Camera, pose: CameraPose, grid: GroundGrid,
-                z: float = 0.0) -> tuple[np.ndarray, np.ndarray]:
+                z: float = 0.0, bound: bool = True) -> tuple[np.ndarray, np.ndarray]:
     """Source-pixel maps of a frame over a ground grid, for ``cv2.remap``.
 
     Parameters
@@ -91,6 +91,12 @@ def ground_maps(camera: Camera, pose: CameraPose, grid: GroundGrid,
         Cells are sampled at their centres on the plane ``z``.
     z : float
         Height of the ground plane in the world frame, metres.
+    bound : bool
+        Compute only the cells inside the bounding box of the frame's ground outline (the
+        others are not seen). False computes every cell of ``grid``: for a grid that is
+        already such a window (:func:`clearfast_gis.mosaic.project.footprint_window`), where
+        tracing the outline again would cost more than the few cells it skips. The maps are
+        the same either way.
 
     Returns
     -------
@@ -103,7 +109,7 @@ def ground_maps(camera: Camera, pose: CameraPose, grid: GroundGrid,
         return reference_maps(camera, pose, grid, z)
     map_x = np.full(grid.shape, NOT_SEEN, dtype=np.float32)
     map_y = np.full(grid.shape, NOT_SEEN, dtype=np.float32)
-    window = _seen_window(camera, pose, grid, z)
+    window = _seen_window(camera, pose, grid, z) if bound else (0, grid.height, 0, grid.width)
     if window is None:
         return map_x, map_y
     r0, r1, c0, c1 = window

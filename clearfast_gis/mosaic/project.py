@@ -161,7 +161,7 @@ def project_frame(frame: np.ndarray, camera, pose: CameraPose, grid: GroundGrid,
     if window is None:
         return None
     sub = subgrid(grid, window)
-    map_x, map_y = ground_maps(camera, pose, sub)
+    map_x, map_y = ground_maps(camera, pose, sub, bound=False)
     seen = map_x >= 0
     if not seen.any():
         return None
@@ -172,6 +172,7 @@ def project_frame(frame: np.ndarray, camera, pose: CameraPose, grid: GroundGrid,
                              sigma)
     incidence = incidence_angle_map(pose, sub)
     keep = seen & (incidence <= max_incidence_deg) & np.all(np.isfinite(values), axis=0)
-    values[:, ~keep] = np.nan
-    incidence = np.where(keep, incidence, np.float32(np.nan)).astype(np.float32)
+    unseen = np.where(keep, np.float32(1.0), np.float32(np.nan))
+    values *= unseen  # NaN where not kept (faster than boolean-mask assignment)
+    incidence = (incidence * unseen).astype(np.float32, copy=False)
     return ProjectedFrame(values, incidence, window)

@@ -23,7 +23,7 @@ from clearfast_gis.geometry.gnss import platform_track, smooth_static_track, utm
 from clearfast_gis.geometry.projection import frame_footprint
 from clearfast_gis.mosaic import build_scan_mosaic, mosaic_grid, temporal_residual
 from clearfast_gis.mosaic.build import FrameCorrection
-from clearfast_gis.parallel import thread_imap
+from clearfast_gis.parallel import serial_kernels, thread_imap
 from clearfast_gis.pipeline.adjustment import (
     adjust_survey_attitude,
     placement_attitude,
@@ -501,7 +501,7 @@ def process_survey(survey_path: str | Path, products: str | Path,
     if until not in ("products", "mosaics"):
         raise ValueError(f"unknown stage {until!r}")
     options = ProcessOptions() if options is None else options
-    with kernels.use(options.kernels):
+    with kernels.use(options.kernels), serial_kernels():
         return _process(survey_path, Path(products), options, resume, progress, until,
                         redo_anomalies)
 

@@ -59,6 +59,7 @@ def parzen_joint_histogram(
     hist: np.ndarray,
     dhist: np.ndarray,
     want_grad: bool,
+    shift_only: bool = False,
 ) -> int:
     """Accumulate the joint histogram of fixed samples against the transformed moving image.
 
@@ -79,6 +80,11 @@ def parzen_joint_histogram(
     dhist : float64 (nbf, nbm, 4)
         Output derivative of ``hist`` w.r.t. (angle, tx, ty, log scale); overwritten when
         ``want_grad``.
+    want_grad : bool
+        Accumulate ``dhist``.
+    shift_only : bool
+        Only the translation derivatives are wanted: ``dhist[..., 0]`` and ``dhist[..., 3]``
+        stay zero (a third less work per sample when registering a translation).
 
     Returns
     -------
@@ -122,28 +128,53 @@ def parzen_joint_histogram(
         count += 1
         fb = fbin[k]
         lo = int(val) - 1
-        if want_grad:
-            gx = ((gx_bin[j0, i0] * (1.0 - fx) + gx_bin[j0, i0 + 1] * fx) * (1.0 - fy)
-                  + (gx_bin[j0 + 1, i0] * (1.0 - fx) + gx_bin[j0 + 1, i0 + 1] * fx) * fy)
-            gy = ((gy_bin[j0, i0] * (1.0 - fx) + gy_bin[j0, i0 + 1] * fx) * (1.0 - fy)
-                  + (gy_bin[j0 + 1, i0] * (1.0 - fx) + gy_bin[j0 + 1, i0 + 1] * fx) * fy)
-            # d(bin position)/d(parameter) = grad . d(x_moving)/d(parameter)
-            d_angle = gx * scale * (-sn * du + cs * dv) + gy * scale * (-cs * du - sn * dv)
-            d_logs = gx * (xm - cx - tx) + gy * (ym - cy - ty)
-            for j in range(lo, lo + 4):
-                if j < 0 or j >= nbm:
-                    continue
-                hist[fb, j] += _bspline3(val - j)
-                dw = _bspline3_deriv(val - j)
-                dhist[fb, j, 0] += dw * d_angle
-                dhist[fb, j, 1] += dw * gx
-                dhist[fb, j, 2] += dw * gy
-                dhist[fb, j, 3] += dw * d_logs
+        inside = lo >= 0 and lo + 3 < nbm  # always, for values in [2, nbm - 3]
+        if inside:
+            # the four cubic B-spline weights (and derivatives) of bins lo..lo+3 at once
+            f = val - (lo + 1)
+            g = 1.0 - f
+            f2 = f * f
+            g2 = g * g
+            hist[fb, lo] += g2 * g / 6.0
+            hist[fb, lo + 1] += 2.0 / 3.0 - f2 + 0.5 * f2 * f
+            hist[fb, lo + 2] += 2.0 / 3.0 - g2 + 0.5 * g2 * g
+            hist[fb, lo + 3] += f2 * f / 6.0
         else:
             for j in range(lo, lo + 4):
-                if j < 0 or j >= nbm:
-                    continue
-                hist[fb, j] += _bspline3(val - j)
+                if 0 <= j < nbm:
+                    hist[fb, j] += _bspline3(val - j)
+        if not want_grad:
+            continue
+        gx = ((gx_bin[j0, i0] * (1.0 - fx) + gx_bin[j0, i0 + 1] * fx) * (1.0 - fy)
+              + (gx_bin[j0 + 1, i0] * (1.0 - fx) + gx_bin[j0 + 1, i0 + 1] * fx) * fy)
+        gy = ((gy_bin[j0, i0] * (1.0 - fx) + gy_bin[j0, i0 + 1] * fx) * (1.0 - fy)
+              + (gy_bin[j0 + 1, i0] * (1.0 - fx) + gy_bin[j0 + 1, i0 + 1] * fx) * fy)
+        # d(bin position)/d(parameter) = grad . d(x_moving)/d(parameter)
+        d_angle = 0.0
+        d_logs = 0.0
+        if not shift_only:
+            d_angle = gx * scale * (-sn * du + cs * dv) + gy * scale * (-cs * du - sn * dv)
+            d_logs = gx * (xm - cx - tx) + gy * (ym - cy - ty)
+        for q in range(4):
+            j = lo + q
+            if inside:
+                if q == 0:
+                    dw = -0.5 * g2
+                elif q == 1:
+                    dw = -2.0 * f + 1.5 * f2
+                elif q == 2:
+                    dw = 2.0 * g - 1.5 * g2
+                else:
+                    dw = 0.5 * f2
+            elif 0 <= j < nbm:
+                dw = _bspline3_deriv(val - j)
+            else:
+                continue
+            dhist[fb, j, 1] += dw * gx
+            dhist[fb, j, 2] += dw * gy
+            if not shift_only:
+                dhist[fb, j, 0] += dw * d_angle
+                dhist[fb, j, 3] += dw * d_logs
     return count
 
 

@@ -62,6 +62,10 @@ class _LevelProblem:
     nbm: int
     radius_px: float
     factor: float
+    complete: bool = False
+    """Every valid fixed pixel is a sample (more samples cannot be had at this level)."""
+    shift_only: bool = False
+    """Only the translation is estimated (the kernel skips the other derivatives)."""
 
     def __post_init__(self) -> None:
         self.hist = np.zeros((self.nbf, self.nbm))
@@ -73,7 +77,7 @@ class _LevelProblem:
         n = parzen_joint_histogram(
             self.us, self.vs, self.fbin, self.mov_bin, self.gx_bin, self.gy_bin,
             t.angle_rad, t.tx_px, t.ty_px, t.scale, t.center_px[0], t.center_px[1],
-            self.hist, self.dhist, want_grad)
+            self.hist, self.dhist, want_grad, self.shift_only)
         mi = mi_from_histogram(self.hist, self.dhist, want_grad, self.grad)
         return mi, n, self.grad.copy()
 
@@ -113,6 +117,7 @@ def _informative_samples(fixed: np.ndarray, valid: np.ndarray,
 def _level_problem(
     fixed: np.ndarray, moving: np.ndarray, f_range: tuple[float, float],
     m_range: tuple[float, float], bins: int, max_samples: int, factor: float,
+    shift_only: bool = False,
 ) -> _LevelProblem:
     valid = np.isfinite(fixed)
     n_valid = int(valid.sum())
@@ -133,7 +138,8 @@ def _level_problem(
         us=cols.astype(np.float64), vs=rows.astype(np.float64), fbin=fbin,
         mov_bin=mov_bin, gx_bin=np.nan_to_num(gx).astype(np.float32),
         gy_bin=np.nan_to_num(gy).astype(np.float32), nbf=nb, nbm=nb,
-        radius_px=0.5 * math.hypot(w, h), factor=factor)
+        radius_px=0.5 * math.hypot(w, h), factor=factor, complete=n_valid <= max_samples,
+        shift_only=shift_only)
 
 
 class _Bounds:
@@ -306,6 +312,7 @@ def register_conformal(
         active.insert(0, 0)
     if scale:
         active.append(3)
+    shift_only = active == [1, 2]
 
     candidates: list[ConformalTransform] = []
     result = base
@@ -316,7 +323,8 @@ def register_conformal(
         factor = 0.5 ** level
         fl = masked_gaussian(fpyr[level], smooth_px)
         ml = masked_gaussian(mpyr[level], smooth_px)
-        problem = _level_problem(fl, ml, f_range, m_range, bins, max_samples, factor)
+        problem = _level_problem(fl, ml, f_range, m_range, bins, max_samples, factor,
+                                 shift_only)
         bounds = _Bounds(base.scaled(factor), active, max_angle_rad,
                          shift_bound * factor, problem.radius_px)
         if level == levels - 1:
@@ -338,10 +346,11 @@ def register_conformal(
             if best is None or score > best[0]:
                 best = (score, t, cmi, cn, cvec)
         _score, result, mi, n_overlap, vec = best
-        if level == 0 and polish_samples > problem.us.size:
+        if level == 0 and polish_samples > problem.us.size and not problem.complete:
             # final polish with more samples from the converged point: a few evaluations
             # that halve the noise-driven error of the estimate
-            problem = _level_problem(fl, ml, f_range, m_range, bins, polish_samples, factor)
+            problem = _level_problem(fl, ml, f_range, m_range, bins, polish_samples, factor,
+                                     shift_only)
             result, mi, n_overlap, vec = _refine(problem, result, bounds,
                                                  xtol_px=XTOL_FINEST_PX, first_step_px=0.05,
                                                  max_eval=POLISH_MAX_EVAL)

@@ -2,6 +2,8 @@
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 from scipy import ndimage
 
 from clearfast_gis.detection import (
@@ -114,6 +116,29 @@ def test_stretch_limits_and_threshold():
     g = stretch_threshold(img, 0.1)
     assert g.sum() == np.sum(img > 49.0)
     assert not stretch_threshold(np.zeros((4, 4)), 0.01).any()
+
+
+@settings(max_examples=200, deadline=None)
+@given(st.lists(st.one_of(st.floats(-1e6, 1e6, width=32), st.just(float("nan")),
+                          st.sampled_from([float("inf"), float("-inf"), 0.0, 1.0])),
+                min_size=1, max_size=300),
+       st.floats(0.0, 0.49), st.sampled_from([np.float32, np.float64, np.int32]))
+def test_stretch_limits_equal_numpy_inverted_cdf(values, epsilon, dtype):
+    """Golden: the rank selection gives numpy's inverted-CDF quantiles of the finite values
+    (NaN and +-inf ignored), for any dtype, ties and sizes."""
+    img = np.array(values, dtype=np.float64)
+    if dtype is np.int32:
+        img = np.nan_to_num(img, nan=0.0, posinf=7.0, neginf=-7.0).astype(np.int32)
+    else:
+        img = img.astype(dtype)
+    finite = np.asarray(img, dtype=np.float64)
+    finite = finite[np.isfinite(finite)]
+    lo, hi = stretch_limits(img, epsilon)
+    if finite.size == 0:
+        assert np.isnan(lo) and np.isnan(hi)
+        return
+    want = np.quantile(finite, [epsilon, 1.0 - epsilon], method="inverted_cdf")
+    assert (lo, hi) == (float(want[0]), float(want[1]))
 
 
 def test_solar_time_and_elevation():

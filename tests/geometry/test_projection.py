@@ -51,6 +51,9 @@ def test_maps_match_project(camera, az, el, h, att):
     ok = seen & (mx >= 0)
     np.testing.assert_allclose(mx[ok], ru[ok], atol=1e-4)
     np.testing.assert_allclose(my[ok], rv[ok], atol=1e-4)
+    # every cell computed (no outline bound): the same maps
+    ux, uy = ground_maps(camera, pose, GRID, bound=False)
+    assert np.array_equal(ux, mx) and np.array_equal(uy, my)
 
 
 @pytest.mark.parametrize("camera", CAMERAS, ids=["equiangular", "pinhole"])

@@ -6,6 +6,8 @@ import math
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 from skimage.metrics import normalized_mutual_information as sk_nmi
 
 from clearfast_gis.registration import (
@@ -130,3 +132,56 @@ def test_parzen_mi_peaks_at_the_truth() -> None:
         off = ConformalTransform(truth.angle_rad, truth.tx_px + dx, truth.ty_px + dy,
                                  center_px=c)
         assert _kernel_mi(fixed, mov_bin, off, False)[0] < best
+
+
+def _bspline3_np(x: np.ndarray) -> np.ndarray:
+    ax = np.abs(x)
+    return np.where(ax < 1, 2 / 3 - ax**2 + 0.5 * ax**3, np.where(ax < 2, (2 - ax) ** 3 / 6, 0))
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.lists(st.floats(-1.5, 25.5), min_size=2, max_size=40), st.booleans())
+def test_parzen_histogram_equals_the_bspline_definition(values, shift_only) -> None:
+    """Golden: the histogram is the cubic B-spline Parzen window of each sample's moving bin,
+    wherever the bin lies (including next to and beyond the histogram edges), with and
+    without the translation-only gradient."""
+    nb = 24
+    n = len(values)
+    mov = np.array(values, dtype=np.float32)[None, :].repeat(2, axis=0)  # (2, n)
+    us = np.arange(n, dtype=float)
+    vs = np.zeros(n)
+    fb = (np.arange(n) % nb).astype(np.int32)
+    zero = np.zeros_like(mov)
+    hist = np.zeros((nb, nb))
+    dhist = np.zeros((nb, nb, 4))
+    got = parzen_joint_histogram(us, vs, fb, mov, zero, zero, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0,
+                                 hist, dhist, True, shift_only)
+    assert got == n
+    want = np.zeros((nb, nb))
+    for k, v in enumerate(mov[0].astype(float)):
+        want[fb[k]] += _bspline3_np(v - np.arange(nb))
+    np.testing.assert_allclose(hist, want, atol=1e-12)
+
+
+def test_translation_only_gradient_is_the_full_gradients_shift_part() -> None:
+    shape = (96, 120)
+    c = ((shape[1] - 1) / 2, (shape[0] - 1) / 2)
+    fixed, moving = make_pair(shape, ConformalTransform(0.02, 1.3, -0.7, center_px=c), seed=5,
+                              noise_k=0.0, invert=False)
+    mov_bin = (2.0 + (moving - moving.min()) / np.ptp(moving) * 19.0).astype(np.float32)
+    gy, gx = np.gradient(mov_bin)
+    h, w = fixed.shape
+    vv, uu = np.mgrid[8:h - 8:2, 8:w - 8:2]
+    fb = np.clip(((fixed[vv, uu] - fixed.min()) / np.ptp(fixed) * 24).astype(np.int32), 0, 23)
+    out = {}
+    for shift_only in (False, True):
+        hist = np.zeros((24, 24))
+        dhist = np.zeros((24, 24, 4))
+        parzen_joint_histogram(uu.ravel().astype(float), vv.ravel().astype(float), fb.ravel(),
+                               mov_bin, gx.astype(np.float32), gy.astype(np.float32),
+                               0.01, 0.6, -0.4, 1.0, c[0], c[1], hist, dhist, True,
+                               shift_only)
+        out[shift_only] = (hist, dhist)
+    np.testing.assert_array_equal(out[True][0], out[False][0])
+    np.testing.assert_array_equal(out[True][1][..., 1:3], out[False][1][..., 1:3])
+    assert not out[True][1][..., [0, 3]].any() and out[False][1][..., [0, 3]].any()
