@@ -14,11 +14,13 @@ ground projection      cell-centre maps (numba) + ``cv2.remap``    ``Camera.proj
                                                                    + scipy ``map_coordinates``
 inverse Planck         radiance-uniform table (numba)              the paper's 0.1 K table +
                                                                    ``np.interp``
+heat-equation steps    band Cholesky, whole time loop compiled     scipy sparse LU, time loop
+                       (numba, GIL released)                       in Python
 =====================  =========================================  ===========================
 
-The thermal inversion has no reference set in the chain: it always inverts every anomaly on
-one site table of forward runs (``benchmarks/thermal_inversion.py`` compares it with a model
-run per anomaly).
+The thermal inversion itself is the same in both: every anomaly is inverted on one site
+table of forward runs (``benchmarks/thermal_inversion.py`` compares it with a model run per
+anomaly); the kernel sets differ in how each forward run steps the heat equation.
 
 The choice is process-wide (``clearfast process --kernels``); :func:`use` sets it for a block.
 """

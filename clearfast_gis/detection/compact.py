@@ -18,6 +18,7 @@ from scipy import ndimage
 
 from clearfast_gis.detection.morphology import disk_footprint
 from clearfast_gis.detection.multiscale import robust_sigma
+from clearfast_gis.parallel import thread_map
 
 
 def compact_contrast(images: np.ndarray, d1_px: float) -> np.ndarray:
@@ -86,18 +87,19 @@ def split_oversized(labels: np.ndarray, images: np.ndarray, d1_px: float, d2_px:
     next_label = int(out.max()) + 1
     min_area = float(np.count_nonzero(disk_footprint(d2_px)))
     margin = int(np.ceil(d1_px))
-    objects = ndimage.find_objects(out)
-    for lab, sl in enumerate(objects, start=1):
-        if sl is None:
-            continue
-        blob = out[sl] == lab
-        if 2.0 * np.sqrt(blob.sum() / np.pi) <= max_diameter_px:
+    searched = []  # (label, crop) of the oversized blobs
+    for lab, sl in enumerate(ndimage.find_objects(out), start=1):
+        if sl is None or 2.0 * np.sqrt(np.count_nonzero(out[sl] == lab) / np.pi) \
+                <= max_diameter_px:
             continue
         r0, r1 = max(0, sl[0].start - margin), min(out.shape[0], sl[0].stop + margin)
         c0, c1 = max(0, sl[1].start - margin), min(out.shape[1], sl[1].stop + margin)
-        crop = (slice(r0, r1), slice(c0, c1))
-        inside = out[crop] == lab
-        contrast = compact_contrast(images[:, r0:r1, c0:c1], d1_px)
+        searched.append((lab, (slice(r0, r1), slice(c0, c1))))
+    # the blobs' contrasts are independent (each reads only the images): on threads
+    contrasts = thread_map(lambda item: compact_contrast(images[(slice(None), *item[1])], d1_px),
+                           searched)
+    for (lab, crop), contrast in zip(searched, contrasts, strict=True):
+        inside = out[crop] == lab  # new labels never equal an original one
         cores, n = ndimage.label((contrast >= min_contrast) & inside,
                                  structure=np.ones((3, 3)))
         if n == 0:

@@ -27,65 +27,78 @@ __all__ = ["binary_reconstruction", "reconstruction", "reconstruction_by_dilatio
 
 
 @numba.njit(cache=True, nogil=True)
-def _hybrid_dilation(f: np.ndarray, g: np.ndarray, valid: np.ndarray) -> None:
+def _hybrid_dilation(f: np.ndarray, g: np.ndarray) -> None:
     """In-place reconstruction by dilation of ``f`` under ``g`` (2-D, same dtype).
 
-    ``valid`` (uint8, same shape) is 0 on pixels that are not part of the image.
+    Both arrays carry a one-pixel frame, and the pixels that are not part of the image, at
+    the lowest value of the dtype in ``f`` and ``g`` alike: such a pixel can neither rise
+    nor raise a neighbour, so the scans need no bounds or validity tests. The frame is not
+    written.
     """
     h, w = f.shape
     n = h * w
-    # raster scan: N+ = the four neighbours already visited (up-left, up, up-right, left)
-    for r in range(h):
-        for c in range(w):
-            if not valid[r, c]:
-                continue
-            m = f[r, c]
-            if r > 0:
-                for dc in (-1, 0, 1):
-                    cc = c + dc
-                    if 0 <= cc < w and valid[r - 1, cc] and f[r - 1, cc] > m:
-                        m = f[r - 1, cc]
-            if c > 0 and valid[r, c - 1] and f[r, c - 1] > m:
-                m = f[r, c - 1]
-            f[r, c] = m if m < g[r, c] else g[r, c]
-    # anti-raster scan: N- = right, down-left, down, down-right; queue pixels that can propagate
-    queue = np.empty(n, dtype=np.int64)
+    best = np.empty(w, dtype=f.dtype)  # per row: max over the neighbours of the row before
+    # raster scan: N+ = the four neighbours already visited (up-left, up, up-right, left); the
+    # row above is final, so its part is taken for the whole row first (a loop without a
+    # carried dependency), then the left neighbour in a short sequential pass
+    for r in range(1, h - 1):
+        up, row, lim = f[r - 1], f[r], g[r]
+        for c in range(1, w - 1):
+            m = row[c]
+            if up[c - 1] > m:
+                m = up[c - 1]
+            if up[c] > m:
+                m = up[c]
+            if up[c + 1] > m:
+                m = up[c + 1]
+            best[c] = m
+        left = row[0]
+        for c in range(1, w - 1):
+            m = best[c] if best[c] > left else left
+            left = m if m < lim[c] else lim[c]
+            row[c] = left
+    # anti-raster scan: N- = right, down-left, down, down-right (same split); then queue the
+    # pixels that can still raise a later neighbour, in the scan's order
+    queue = np.empty(n, dtype=np.int64)  # circular, n slots
     inq = np.zeros(n, dtype=np.uint8)
     head = 0
+    tail = 0  # next free slot
     count = 0
-    for r in range(h - 1, -1, -1):
-        for c in range(w - 1, -1, -1):
-            if not valid[r, c]:
-                continue
-            m = f[r, c]
-            if c + 1 < w and valid[r, c + 1] and f[r, c + 1] > m:
-                m = f[r, c + 1]
-            if r + 1 < h:
-                for dc in (-1, 0, 1):
-                    cc = c + dc
-                    if 0 <= cc < w and valid[r + 1, cc] and f[r + 1, cc] > m:
-                        m = f[r + 1, cc]
-            v = m if m < g[r, c] else g[r, c]
-            f[r, c] = v
-            push = False
-            if c + 1 < w and valid[r, c + 1] and f[r, c + 1] < v and f[r, c + 1] < g[r, c + 1]:
-                push = True
-            if not push and r + 1 < h:
-                for dc in (-1, 0, 1):
-                    cc = c + dc
-                    if (0 <= cc < w and valid[r + 1, cc] and f[r + 1, cc] < v
-                            and f[r + 1, cc] < g[r + 1, cc]):
-                        push = True
-                        break
-            if push:
+    for r in range(h - 2, 0, -1):
+        down, row, lim, lim_down = f[r + 1], f[r], g[r], g[r + 1]
+        for c in range(1, w - 1):
+            m = row[c]
+            if down[c - 1] > m:
+                m = down[c - 1]
+            if down[c] > m:
+                m = down[c]
+            if down[c + 1] > m:
+                m = down[c + 1]
+            best[c] = m
+        right = row[w - 1]
+        for c in range(w - 2, 0, -1):
+            m = best[c] if best[c] > right else right
+            right = m if m < lim[c] else lim[c]
+            row[c] = right
+        for c in range(w - 2, 0, -1):
+            v = row[c]
+            if ((row[c + 1] < v and row[c + 1] < lim[c + 1])
+                    or (down[c - 1] < v and down[c - 1] < lim_down[c - 1])
+                    or (down[c] < v and down[c] < lim_down[c])
+                    or (down[c + 1] < v and down[c + 1] < lim_down[c + 1])):
                 p = r * w + c
-                queue[(head + count) % n] = p
+                queue[tail] = p
+                tail += 1  # fewer than n pixels are queued here: no wrap
                 inq[p] = 1
                 count += 1
     # FIFO propagation; a pixel is in the queue at most once at a time, so n slots suffice
+    if tail == n:
+        tail = 0
     while count > 0:
         p = queue[head]
-        head = (head + 1) % n
+        head += 1
+        if head == n:
+            head = 0
         count -= 1
         inq[p] = 0
         r = p // w
@@ -93,19 +106,18 @@ def _hybrid_dilation(f: np.ndarray, g: np.ndarray, valid: np.ndarray) -> None:
         v = f[r, c]
         for dr in (-1, 0, 1):
             rr = r + dr
-            if rr < 0 or rr >= h:
-                continue
             for dc in (-1, 0, 1):
                 cc = c + dc
-                if (dr == 0 and dc == 0) or cc < 0 or cc >= w or not valid[rr, cc]:
-                    continue
                 fq = f[rr, cc]
                 gq = g[rr, cc]
-                if fq < v and fq != gq:
+                if fq < v and fq != gq:  # False on the frame and on no-data (f = g there)
                     f[rr, cc] = v if v < gq else gq
                     q = rr * w + cc
                     if not inq[q]:
-                        queue[(head + count) % n] = q
+                        queue[tail] = q
+                        tail += 1
+                        if tail == n:
+                            tail = 0
                         inq[q] = 1
                         count += 1
 
@@ -113,8 +125,13 @@ def _hybrid_dilation(f: np.ndarray, g: np.ndarray, valid: np.ndarray) -> None:
 _KERNEL_DTYPES = (np.uint8, np.uint16, np.int32, np.float32, np.float64)
 
 
-def _prepare(seed: np.ndarray, mask: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray,
+def _lowest(dtype: np.dtype) -> float | int:
+    return -np.inf if dtype.kind == "f" else np.iinfo(dtype).min
+
+
+def _prepare(seed: np.ndarray, mask: np.ndarray) -> tuple[np.ndarray, np.ndarray,
                                                           np.ndarray | None]:
+    """Framed copies of seed and mask for :func:`_hybrid_dilation`, and the no-data mask."""
     seed = np.asarray(seed)
     mask = np.asarray(mask)
     if seed.shape != mask.shape or seed.ndim != 2:
@@ -125,17 +142,22 @@ def _prepare(seed: np.ndarray, mask: np.ndarray) -> tuple[np.ndarray, np.ndarray
         dtype = np.dtype(np.uint8)
     elif dtype.type not in _KERNEL_DTYPES:
         dtype = np.dtype(np.float64)
-    f = np.ascontiguousarray(seed, dtype=dtype).copy()
-    g = np.ascontiguousarray(mask, dtype=dtype)
+    low = _lowest(dtype)
+    h, w = seed.shape
+    f = np.full((h + 2, w + 2), low, dtype=dtype)
+    g = np.full((h + 2, w + 2), low, dtype=dtype)
+    f[1:-1, 1:-1] = seed
+    g[1:-1, 1:-1] = mask
     nodata = None
     if dtype.kind == "f":
         nodata = np.isnan(f) | np.isnan(g)
-        valid = (~nodata).view(np.uint8)
-        if not nodata.any():
+        if nodata.any():
+            f[nodata] = low
+            g[nodata] = low
+            nodata = nodata[1:-1, 1:-1]
+        else:
             nodata = None
-    else:
-        valid = np.ones(f.shape, dtype=np.uint8)
-    return f, g, np.ascontiguousarray(valid), nodata
+    return f, g, nodata
 
 
 def reconstruction_by_dilation(seed: np.ndarray, mask: np.ndarray) -> np.ndarray:
@@ -155,13 +177,14 @@ def reconstruction_by_dilation(seed: np.ndarray, mask: np.ndarray) -> np.ndarray
         'dilation')`` on valid data.
     """
     is_bool = np.asarray(seed).dtype == np.bool_ and np.asarray(mask).dtype == np.bool_
-    f, g, valid, nodata = _prepare(seed, mask)
-    if np.any((f > g) & valid.astype(bool)):
+    f, g, nodata = _prepare(seed, mask)
+    if np.any(f > g):
         raise ValueError("reconstruction by dilation needs seed <= mask everywhere")
-    _hybrid_dilation(f, g, valid)
+    _hybrid_dilation(f, g)
+    out = f[1:-1, 1:-1]
     if nodata is not None:
-        f[nodata] = np.nan
-    return f.astype(bool) if is_bool else f
+        out[nodata] = np.nan
+    return out.astype(bool) if is_bool else np.ascontiguousarray(out)
 
 
 def reconstruction_by_erosion(seed: np.ndarray, mask: np.ndarray) -> np.ndarray:

@@ -123,6 +123,7 @@ def scan_frames(ctx: SurveyContext, scan: int, air_at, atmosphere: bool = True,
     poses = frame_poses(ctx, fr.time_s[sel[0]], fr.pan_deg[sel[0]], fr.tilt_deg[sel[0]])
     raw_all = [survey.read_scan(scan, b) for b in range(n_bands)]
     pos_all = [fr.position[survey.scan_rows(scan, b)] for b in range(n_bands)]
+    gains: list[dict] = [{} for _ in range(n_bands)]  # calibration images, once per scan
     for start in range(0, keep.size, chunk):
         idx = slice(start, min(start + chunk, keep.size))
         block_pos = keep[idx]
@@ -143,9 +144,10 @@ def scan_frames(ctx: SurveyContext, scan: int, air_at, atmosphere: bool = True,
                                                              band.lambda_max_um)
             air: AirState = air_at(times)
             dst = stack[:, b]
-            t_k = apparent_temperature_frames(raw, times, b, table, ctx.events, air,
-                                              path_length_m=paths, atmosphere=use_atm)
-            np.subtract(t_k, np.float32(ZERO_CELSIUS_K), out=dst)
+            apparent_temperature_frames(raw, times, b, table, ctx.events, air,
+                                        path_length_m=paths, atmosphere=use_atm,
+                                        gain_cache=gains[b], out=dst)
+            dst -= np.float32(ZERO_CELSIUS_K)  # kelvin to degrees C
             if b > 0 and not _is_identity(ctx.band_offsets[b]):
                 for k in range(dst.shape[0]):
                     dst[k] = warp_conformal(dst[k], ctx.band_offsets[b], dst[k].shape)

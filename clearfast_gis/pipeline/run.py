@@ -23,7 +23,7 @@ from clearfast_gis.geometry.gnss import platform_track, smooth_static_track, utm
 from clearfast_gis.geometry.projection import frame_footprint
 from clearfast_gis.mosaic import build_scan_mosaic, mosaic_grid, temporal_residual
 from clearfast_gis.mosaic.build import FrameCorrection
-from clearfast_gis.parallel import serial_kernels, thread_imap
+from clearfast_gis.parallel import serial_kernels, thread_imap, thread_map
 from clearfast_gis.pipeline.adjustment import (
     adjust_survey_attitude,
     placement_attitude,
@@ -577,13 +577,17 @@ def _scan_time(survey, scan: int) -> tuple[float, float]:
 
 
 def _load_stack(products: Path, scans: list[int]) -> tuple[np.ndarray, object]:
-    """The scans' mosaics as one float32 (N, B, H, W) array (filled one by one, so that the
-    stack is the only full copy in memory) and the first mosaic's record."""
+    """The scans' mosaics as one float32 (N, B, H, W) array (filled as they are read, on
+    threads that decompress side by side, so that the stack is the only full copy in memory)
+    and the first mosaic's record."""
     first = read_mosaic(products / mosaic_rel(scans[0]))
     stack = np.empty((len(scans), *first.bands_c.shape), dtype=np.float32)
     stack[0] = first.bands_c
-    for k, s in enumerate(scans[1:], start=1):
-        stack[k] = read_mosaic(products / mosaic_rel(s)).bands_c
+
+    def fill(k: int) -> None:
+        stack[k] = read_mosaic(products / mosaic_rel(scans[k])).bands_c
+
+    thread_map(fill, range(1, len(scans)))
     return stack, first
 
 

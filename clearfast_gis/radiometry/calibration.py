@@ -258,6 +258,17 @@ def select_events(
     list of (CalibrationEvent, weight)
         One or two entries, weights summing to 1.
     """
+    return select_events_many(events, [time_s], mode, band)[0]
+
+
+def select_events_many(
+    events: Sequence[CalibrationEvent],
+    times_s: ArrayLike,
+    mode: str = "interpolate",
+    band: int | None = None,
+) -> list[list[tuple[CalibrationEvent, float]]]:
+    """:func:`select_events` at each of ``times_s`` (UTC epoch seconds, shape (N,)): the
+    events are sorted once for all the times. Returns N lists of (event, weight)."""
     if mode not in ("nearest", "interpolate"):
         raise InvalidInput(f"unknown calibration mode {mode!r} (nearest or interpolate)",
                            field="mode", exit_code=2)
@@ -266,15 +277,16 @@ def select_events(
         raise InvalidInput("no calibration event" + ("" if band is None else f" for band {band}"),
                            field="blackbody")
     times = np.array([e.time_s for e in pool])
-    t = float(time_s)
-    if mode == "nearest" or t <= times[0] or t >= times[-1] or len(pool) == 1:
-        return [(pool[int(np.argmin(np.abs(times - t)))], 1.0)]
-    j = int(np.searchsorted(times, t, side="right"))
-    a, b = pool[j - 1], pool[j]
-    w = (t - a.time_s) / (b.time_s - a.time_s)
-    if w == 0.0:
-        return [(a, 1.0)]
-    return [(a, 1.0 - w), (b, w)]
+    out = []
+    for t in np.asarray(times_s, dtype=np.float64).ravel().tolist():
+        if mode == "nearest" or t <= times[0] or t >= times[-1] or len(pool) == 1:
+            out.append([(pool[int(np.argmin(np.abs(times - t)))], 1.0)])
+            continue
+        j = int(np.searchsorted(times, t, side="right"))
+        a, b = pool[j - 1], pool[j]
+        w = (t - a.time_s) / (b.time_s - a.time_s)
+        out.append([(a, 1.0)] if w == 0.0 else [(a, 1.0 - w), (b, w)])
+    return out
 
 
 def gain_offset_at(

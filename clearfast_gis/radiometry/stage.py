@@ -29,7 +29,7 @@ from clearfast_gis.radiometry.calibration import (
     GainOffset,
     blackbody_temperature_at,
     blend_gain_offsets,
-    select_events,
+    select_events_many,
 )
 from clearfast_gis.radiometry.fused import apparent_frame
 from clearfast_gis.radiometry.table import BandTable
@@ -146,6 +146,8 @@ def apparent_temperature_frames(
     min_contrast_counts: float = DEFAULT_MIN_CONTRAST_COUNTS,
     atmosphere: bool = True,
     progress: Progress = NULL_PROGRESS,
+    gain_cache: dict | None = None,
+    out: np.ndarray | None = None,
 ) -> np.ndarray:
     """Apparent temperature of a stack of frames, each calibrated at its own time.
 
@@ -175,11 +177,17 @@ def apparent_temperature_frames(
         Apply the atmospheric correction (Eq. 4); without it ``tau = 1``.
     progress : Progress
         Advanced once per frame.
+    gain_cache : dict, optional
+        Gain and offset images of the events already computed (for this band, table and
+        ``min_contrast_counts``), filled here: pass the same dict to the calls that calibrate
+        one scan in blocks of frames.
+    out : float32 (P, H, W), optional
+        Written with the result (e.g. one band of a (P, B, H, W) stack).
 
     Returns
     -------
     ndarray of float32 (P, H, W)
-        Apparent temperature, kelvin; NaN at uncalibrated pixels.
+        Apparent temperature, kelvin; NaN at uncalibrated pixels (``out`` when given).
     """
     raw = np.asarray(raw)
     if raw.ndim != 3:
@@ -197,19 +205,29 @@ def apparent_temperature_frames(
     if coarse and not (2 <= path.shape[1] <= raw.shape[1] and 2 <= path.shape[2] <= raw.shape[2]):
         raise InvalidInput(f"path length lattice {path.shape} does not fit frames {raw.shape}",
                            field="path_length_m")
-    cache: dict[int, GainOffset] = {}
-    out = np.empty(raw.shape, dtype=np.float32)
+    cache: dict[int, GainOffset] = {} if gain_cache is None else gain_cache
+    selected = select_events_many(events, times, mode, band)
+    tau_all = None
+    if atmosphere:  # every frame's transmittance in one call
+        frame_axis = (n,) + (1,) * (path.ndim - 1 if path.ndim == 3 else path.ndim)
+        tau_all = atmospheric_transmittance(
+            path, *(np.asarray(a, dtype=np.float64).reshape(frame_axis)
+                    for a in (air.t_air_k, air.rh_pct, air.pressure_hpa)),
+            table.lambda_min_um, table.lambda_max_um)
+    b_air_all = table.radiance(air.t_air_k)
+    if out is None:
+        out = np.empty(raw.shape, dtype=np.float32)
+    elif out.shape != raw.shape or out.dtype != np.float32:
+        raise InvalidInput(f"output {out.dtype} {out.shape} does not match frames {raw.shape}",
+                           field="out")
     for k in range(n):
         parts = []
-        for ev, w in select_events(events, times[k], mode, band):
+        for ev, w in selected[k]:
             if id(ev) not in cache:
                 cache[id(ev)] = ev.gain_offset(table, min_contrast_counts)
             parts.append((cache[id(ev)], w))
-        d = path[k] if path.ndim == 3 else path
-        if atmosphere:
-            tau = atmospheric_transmittance(d, air.t_air_k[k], air.rh_pct[k],
-                                            air.pressure_hpa[k], table.lambda_min_um,
-                                            table.lambda_max_um)
+        if tau_all is not None:
+            tau = tau_all[k]
             if coarse:
                 tau = cv2.resize(np.asarray(tau, dtype=np.float32),
                                  (raw.shape[2], raw.shape[1]), interpolation=cv2.INTER_LINEAR)
@@ -220,8 +238,7 @@ def apparent_temperature_frames(
                                      table)
         else:
             tau_map = np.broadcast_to(np.asarray(tau, dtype=np.float32), raw.shape[1:])
-            apparent_frame(raw[k], parts, tau_map, float(table.radiance(air.t_air_k[k])),
-                           table, out[k])
+            apparent_frame(raw[k], parts, tau_map, float(b_air_all[k]), table, out[k])
         progress.advance(1)
     return out
 

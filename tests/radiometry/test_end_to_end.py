@@ -73,6 +73,26 @@ def test_scene_apparent_temperature_within_0_15_k(lw_table):
     nearest = apparent_temperature_frames(raw, frame_times, 0, lw_table, events, air, slant,
                                           mode="nearest")
     assert np.sqrt(np.mean((nearest - truth_app) ** 2)) > rms
+    # in blocks of frames, into a band of a (P, B, H, W) stack, calibration images shared:
+    # the same values
+    stack = np.full((P, 2, H, W), np.nan, dtype=np.float32)
+    gains: dict = {}
+    for block in (slice(0, P // 2), slice(P // 2, P)):
+        sub = AirState(*(a[block] for a in (air.t_air_k, air.rh_pct, air.pressure_hpa)))
+        got = apparent_temperature_frames(raw[block], frame_times[block], 0, lw_table, events,
+                                          sub, slant[block], gain_cache=gains,
+                                          out=stack[block, 1])
+        assert np.shares_memory(got, stack)
+    assert len(gains) == len(events)
+    np.testing.assert_array_equal(stack[:, 1], t_app)
+    assert np.isnan(stack[:, 0]).all()
+    # a path per frame (P,) gives each frame one transmittance, as a constant map would
+    mean_path = slant.mean(axis=(1, 2))
+    per_frame = apparent_temperature_frames(raw, frame_times, 0, lw_table, events, air,
+                                            mean_path)
+    as_maps = apparent_temperature_frames(raw, frame_times, 0, lw_table, events, air,
+                                          np.broadcast_to(mean_path[:, None, None], slant.shape))
+    np.testing.assert_allclose(per_frame, as_maps, atol=1e-4)
 
 
 def test_frames_reject_bad_path_shape(lw_table):
