@@ -71,7 +71,7 @@ def _mi_after(ref: np.ndarray, mov: np.ndarray, t: ConformalTransform) -> float:
 def coregister_projected(projected: ProjectedFrame, reference: np.ndarray, pixel_size_m: float,
                          max_shift_m: float, max_angle_deg: float = 2.0,
                          init: ConformalTransform | None = None,
-                         min_overlap_frac: float = 0.15,
+                         min_overlap_frac: float = 0.15, max_samples: int | None = None,
                          ) -> tuple[ProjectedFrame, FrameCorrection, ConformalTransform | None]:
     """Align a projected frame to reference values under its window.
 
@@ -90,6 +90,9 @@ def coregister_projected(projected: ProjectedFrame, reference: np.ndarray, pixel
         Predicted correction (e.g. from the previous scan at the same position).
     min_overlap_frac : float
         Fraction of the frame's cells that must overlap the reference to try.
+    max_samples : int, optional
+        Samples of the registration at every level, final polish included (default: those
+        of :func:`clearfast_gis.registration.register_conformal`).
 
     Returns
     -------
@@ -108,8 +111,10 @@ def coregister_projected(projected: ProjectedFrame, reference: np.ndarray, pixel
     h, w = ref.shape
     centre = ((w - 1) / 2.0, (h - 1) / 2.0)
     start = None if init is None else init.with_center(centre)
+    budget = {} if max_samples is None else {"max_samples": max_samples,
+                                             "polish_samples": max_samples}
     t = register_conformal(ref, mov, max_shift_px=max_shift_m / pixel_size_m,
-                           max_angle_deg=max_angle_deg, init=start, bins=24)
+                           max_angle_deg=max_angle_deg, init=start, bins=24, **budget)
     if not t.converged:
         return projected, FrameCorrection(reason="not_converged", metric=t.metric), None
     base_t = start if start is not None else ConformalTransform.identity(centre)

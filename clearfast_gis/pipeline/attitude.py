@@ -23,6 +23,13 @@ from clearfast_gis.registration import ConformalTransform, register_conformal
 MARKER_WEIGHT = 5.0
 """Weight of a marker tie relative to an image-registration tie (markers are surveyed)."""
 
+TIE_SAMPLES = 12_000
+"""Samples (the steepest-gradient cells) of each frame registration that ties a scan's
+attitude. A frame window holds ~30,000 cells; the attitude is fitted to ~50 ties, whose
+average does not need each tie's last hundredth of a pixel: on the trial survey 12,000
+samples change the fitted roll, pitch and yaw by <= 0.0003 degrees (0.1 mm at 20 m) and
+save a fifth of the fit's time."""
+
 
 @dataclass(frozen=True)
 class AttitudeFit:
@@ -192,7 +199,8 @@ def scan_attitude(frames: list[FrameInput], times_s: np.ndarray, camera, grid: G
                 return None
             rs, cs = pf.window.slices
             return pf, [coregister_projected(pf, ref.values[:, rs, cs], grid.pixel_size,
-                                             max_shift_m=search_m, max_angle_deg=0.0)[1]
+                                             max_shift_m=search_m, max_angle_deg=0.0,
+                                             max_samples=TIE_SAMPLES)[1]
                         for ref in references]
 
         for i, measured in zip(pick, thread_map(measure, pick), strict=True):

@@ -100,7 +100,7 @@ class ContrastCurves:
         (self.model,) = ax.plot([], [], "-", color="#2c3e50", lw=1.2, label="thermal model")
         ax.axhline(0.0, color="grey", lw=0.6)
         ax.set_ylabel("contrast (K)")
-        self.title = ax.set_title("", fontsize=9)
+        self.title = ax.set_title("", fontsize=9, y=1.0, pad=6.0)  # fixed: no re-layout per curve
         self.fig.subplots_adjust(left=0.14, right=0.97, bottom=0.16, top=0.89)
 
     def png(self, times_s: np.ndarray, contrast_k: np.ndarray,
@@ -134,3 +134,4 @@ def contrast_curve_png(times_s: np.ndarray, contrast_k: np.ndarray,
     """One anomaly's centre-minus-background contrast over the scans, with the model fit
     (see :class:`ContrastCurves` for many)."""
     return ContrastCurves().png(times_s, contrast_k, model_times_s, model_k, title)
+
