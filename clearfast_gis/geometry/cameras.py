@@ -7,6 +7,7 @@ pixel returns the pixel. Pixels are (u, v) = (column, row) with centres at integ
 
 from __future__ import annotations
 
+import functools
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 
@@ -77,15 +78,22 @@ class _Camera:
                     & (uv[:, 1] >= 0.0) & (uv[:, 1] <= self.height - 1))
 
     def edge_pixels(self, samples_per_edge: int = 32) -> np.ndarray:
-        """The frame outline (pixel-centre hull), counter-clockwise in the image, (4n, 2)."""
-        n = int(samples_per_edge)
-        w, h = self.width - 1.0, self.height - 1.0
-        t = np.linspace(0.0, 1.0, n, endpoint=False)
-        top = np.column_stack([t * w, np.zeros(n)])
-        right = np.column_stack([np.full(n, w), t * h])
-        bottom = np.column_stack([w - t * w, np.full(n, h)])
-        left = np.column_stack([np.zeros(n), h - t * h])
-        return np.vstack([top, right, bottom, left])
+        """The frame outline (pixel-centre hull), counter-clockwise in the image, (4n, 2)
+        (read-only: computed once per frame size, every frame footprint uses it)."""
+        return _edge_pixels(self.width, self.height, int(samples_per_edge))
+
+
+@functools.lru_cache(maxsize=16)
+def _edge_pixels(width: int, height: int, n: int) -> np.ndarray:
+    w, h = width - 1.0, height - 1.0
+    t = np.linspace(0.0, 1.0, n, endpoint=False)
+    top = np.column_stack([t * w, np.zeros(n)])
+    right = np.column_stack([np.full(n, w), t * h])
+    bottom = np.column_stack([w - t * w, np.full(n, h)])
+    left = np.column_stack([np.zeros(n), h - t * h])
+    out = np.vstack([top, right, bottom, left])
+    out.flags.writeable = False
+    return out
 
 
 def _check_size(width: int, height: int) -> tuple[int, int]:

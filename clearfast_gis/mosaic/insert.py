@@ -2,9 +2,27 @@
 
 from __future__ import annotations
 
+import numba
 import numpy as np
 
 from clearfast_gis.mosaic.project import ProjectedFrame
+
+
+@numba.njit(cache=True, nogil=True)
+def _insert(values, incidence, source, frame_values, frame_incidence, row0, col0,
+            index):  # pragma: no cover - compiled
+    h, w = frame_incidence.shape
+    n = 0
+    for i in range(h):
+        for j in range(w):
+            a = frame_incidence[i, j]
+            if a < incidence[row0 + i, col0 + j]:  # False where the frame is NaN (unseen)
+                incidence[row0 + i, col0 + j] = a
+                source[row0 + i, col0 + j] = index
+                for b in range(values.shape[0]):
+                    values[b, row0 + i, col0 + j] = frame_values[b, i, j]
+                n += 1
+    return n
 
 
 class MosaicCanvas:
@@ -40,15 +58,13 @@ class MosaicCanvas:
         return self.values[:, rs, cs]
 
     def insert(self, projected: ProjectedFrame, frame_index: int) -> int:
-        """Insert a projected frame; returns the number of cells it now supplies."""
-        rs, cs = projected.window.slices
-        inc = self.incidence_deg[rs, cs]
-        better = projected.valid & (projected.incidence_deg < inc)
-        inc[better] = projected.incidence_deg[better]
-        self.source[rs, cs][better] = frame_index
-        vals = self.values[:, rs, cs]
-        vals[:, better] = projected.values[:, better]
-        return int(better.sum())
+        """Insert a projected frame; returns the number of cells it now supplies (compiled,
+        one pass over the window, GIL released)."""
+        win = projected.window
+        return int(_insert(self.values, self.incidence_deg, self.source,
+                           np.ascontiguousarray(projected.values, dtype=np.float32),
+                           np.ascontiguousarray(projected.incidence_deg, dtype=np.float32),
+                           win.row0, win.col0, int(frame_index)))
 
     @property
     def covered(self) -> np.ndarray:
