@@ -124,6 +124,17 @@ def test_viewing_geometry_maps():
     assert off_axis_angle_map(pose, g)[0, 0] == pytest.approx(45.0, abs=1e-5)
 
 
+@given(st.floats(-50, 50), st.floats(-50, 50), st.floats(0.5, 30), st.floats(-1, 1))
+@settings(max_examples=40, deadline=None)
+def test_incidence_map_equals_its_definition(x, y, h, z):
+    """Golden: the compiled map equals atan2(horizontal distance, height) in degrees."""
+    pose = CameraPose([x, y, h + z], 0.0, -45.0)
+    grid = GroundGrid.from_bounds(-20.0, -5.0, 20.0, 30.0, 0.7, 32636)
+    xc, yc = grid.cell_centres()
+    want = np.degrees(np.arctan2(np.hypot(xc - x, yc - y), h)).astype(np.float32)
+    np.testing.assert_allclose(incidence_angle_map(pose, grid, z), want, atol=1e-4)
+
+
 def test_far_reaching_outline_still_bounds_the_seen_cells():
     """Regression (found by hypothesis): a shallow view whose outline is cut at the grid's
     reach and crosses itself must still give the window of the seen cells."""
