@@ -26,6 +26,22 @@ __all__ = ["binary_reconstruction", "reconstruction", "reconstruction_by_dilatio
            "reconstruction_by_erosion"]
 
 
+@numba.njit(cache=True, nogil=True, inline="always")
+def _row_max(row, other, best) -> None:  # pragma: no cover - compiled
+    """``best[c] = max(row[c], other[c - 1], other[c], other[c + 1])`` inside the frame: the
+    part of a pixel's neighbourhood that lies in an already final row (no carried
+    dependency, so the loop vectorises)."""
+    for c in range(1, row.size - 1):
+        m = row[c]
+        if other[c - 1] > m:
+            m = other[c - 1]
+        if other[c] > m:
+            m = other[c]
+        if other[c + 1] > m:
+            m = other[c + 1]
+        best[c] = m
+
+
 @numba.njit(cache=True, nogil=True)
 def _hybrid_dilation(f: np.ndarray, g: np.ndarray) -> None:
     """In-place reconstruction by dilation of ``f`` under ``g`` (2-D, same dtype).
@@ -42,16 +58,8 @@ def _hybrid_dilation(f: np.ndarray, g: np.ndarray) -> None:
     # row above is final, so its part is taken for the whole row first (a loop without a
     # carried dependency), then the left neighbour in a short sequential pass
     for r in range(1, h - 1):
-        up, row, lim = f[r - 1], f[r], g[r]
-        for c in range(1, w - 1):
-            m = row[c]
-            if up[c - 1] > m:
-                m = up[c - 1]
-            if up[c] > m:
-                m = up[c]
-            if up[c + 1] > m:
-                m = up[c + 1]
-            best[c] = m
+        row, lim = f[r], g[r]
+        _row_max(row, f[r - 1], best)
         left = row[0]
         for c in range(1, w - 1):
             m = best[c] if best[c] > left else left
@@ -66,15 +74,7 @@ def _hybrid_dilation(f: np.ndarray, g: np.ndarray) -> None:
     count = 0
     for r in range(h - 2, 0, -1):
         down, row, lim, lim_down = f[r + 1], f[r], g[r], g[r + 1]
-        for c in range(1, w - 1):
-            m = row[c]
-            if down[c - 1] > m:
-                m = down[c - 1]
-            if down[c] > m:
-                m = down[c]
-            if down[c + 1] > m:
-                m = down[c + 1]
-            best[c] = m
+        _row_max(row, down, best)
         right = row[w - 1]
         for c in range(w - 2, 0, -1):
             m = best[c] if best[c] > right else right

@@ -242,17 +242,21 @@ def run(
     return _run_band(*args)
 
 
-def _surface_gains(ring: np.ndarray, k0: np.ndarray, h: float):
-    """Elimination of the surface node into the top cells, arrays of shape (Nr,).
+def _step_terms(cap: np.ndarray, ring: np.ndarray, k0: np.ndarray, top: np.ndarray,
+                h: float, dt_s: float):
+    """What a BDF2 step adds to the conduction matrix, and the surface elimination.
 
-    Returns ``top_gain`` (W K-1, added to the top cells' diagonal), ``q_gain`` (m2, the
-    share of the flux ``q`` that enters the top cell) and ``ts_gain`` (m2 K W-1, in
-    ``T_s = (q + k0 T_top) ts_gain``).
+    Returns ``c_dt`` (n,), capacity over the step (W K-1); ``diag_add`` (n,), added to the
+    matrix's diagonal: ``1.5 c_dt`` plus, in the top cells, the surface node eliminated
+    (``ring k0 h / (k0 + h)``); ``q_gain`` (Nr,), m2, the share of the flux ``q`` that
+    enters the top cell; ``ts_gain`` (Nr,), m2 K W-1, in ``T_s = (q + k0 T_top) ts_gain``.
     """
-    top_gain = ring * k0 * h / (k0 + h)
+    c_dt = cap / dt_s
+    diag_add = 1.5 * c_dt
+    diag_add[top] += ring * k0 * h / (k0 + h)
     q_gain = ring * k0 / (k0 + h)
     ts_gain = 1.0 / (k0 + h)
-    return top_gain, q_gain, ts_gain
+    return c_dt, diag_add, q_gain, ts_gain
 
 
 def _initial(init_k, init_prev_k, surface_init_k, top):
@@ -274,11 +278,9 @@ def _run_band(z_faces, r_faces, props, drive, dt_s, init_k, init_prev_k, surface
     nz, nr = z_faces.size - 1, r_faces.size - 1
     net = _network(z_faces, r_faces, props)
     h = float(drive.h_ref_wm2k)
-    top_gain, q_gain, ts_gain = _surface_gains(net.ring, net.k0, h)
-    diag_add = np.zeros(nz * nr)
-    diag_add[net.idx[0]] = top_gain
-    c_dt = net.cap / dt_s
-    packed = banded.pack(banded.cholesky(_band(net, 1.5 * c_dt + diag_add)))
+    c_dt, diag_add, q_gain, ts_gain = _step_terms(net.cap, net.ring, net.k0, net.idx[0], h,
+                                                  dt_s)
+    packed = banded.pack(banded.cholesky(_band(net, diag_add)))
     n_steps = drive.flux_wm2.size - 1
     t_now, t_prev, ts_now, ts_prev = _initial(init_k, init_prev_k, surface_init_k, net.idx[0])
     keep = set(keep_states)
@@ -310,11 +312,8 @@ def _run_splu(z_faces, r_faces, props, drive, dt_s, init_k, init_prev_k, surface
     h = drive.h_ref_wm2k
     top = idx[0]
     bottom = idx[-1]
-    top_gain, q_gain, ts_gain = _surface_gains(ring, k0, h)
-    diag_add = np.zeros(nz * nr)
-    diag_add[top] = top_gain
-    c_dt = cap / dt_s
-    system = mat + sp.diags(1.5 * c_dt + diag_add)
+    c_dt, diag_add, q_gain, ts_gain = _step_terms(cap, ring, k0, top, h, dt_s)
+    system = mat + sp.diags(diag_add)
     lu = splu(system.tocsc())
     n_steps = drive.flux_wm2.size - 1
     eps_sigma = drive.emissivity * STEFAN_BOLTZMANN

@@ -2,32 +2,19 @@
 
 from __future__ import annotations
 
-import csv
-
 import numpy as np
 
 from clearfast_gis.geometry import camera_from_manifest
-from clearfast_gis.geometry.pose import CameraPose
+from clearfast_gis.pipeline.truth import read_true_poses
 from clearfast_gis.simulate.config import preset
 from clearfast_gis.simulate.platform import lift_motion
 from clearfast_gis.survey import read_survey
 
 
-def _poses(root) -> dict:
-    out = {}
-    with open(root / "truth" / "poses.csv") as fh:
-        for r in csv.DictReader(fh):
-            out[(int(r["scan"]), int(r["position"]), int(r["band"]))] = CameraPose(
-                np.array([float(r["e_m"]), float(r["n_m"]), float(r["z_m"])]),
-                float(r["azimuth_deg"]), float(r["elevation_deg"]),
-                (float(r["roll_deg"]), float(r["pitch_deg"]), float(r["yaw_deg"])))
-    return out
-
-
 def test_drift_shifts_view_more_than_half_a_frame(drift_survey):
     sv = read_survey(drift_survey.root)
     cam = camera_from_manifest(sv.manifest["camera"])
-    poses = _poses(drift_survey.root)
+    poses = read_true_poses(drift_survey.root)
     last = drift_survey.n_scans - 1
     centre = np.array([[(cam.width - 1) / 2.0, (cam.height - 1) / 2.0]])
     shifts = []
@@ -65,7 +52,7 @@ def test_trial_drift_exceeds_half_frame():
 
 
 def test_no_drift_keeps_the_pose(demo_survey):
-    poses = _poses(demo_survey.root)
+    poses = read_true_poses(demo_survey.root)
     z = np.array([p.position_m[2] for p in poses.values()])
     att = np.array([p.attitude_rpy_deg for p in poses.values()])
     assert np.ptp(z) < 0.01  # millimetre sway only
