@@ -209,3 +209,31 @@ def test_acquired_folder_goes_through_process(acquired, tmp_path):
     mosaics = sorted((tmp_path / "products" / "mosaics").glob("*.tif"))
     assert len(mosaics) == 2
     assert (tmp_path / "products" / "anomalies.gpkg").exists()
+
+
+def test_rig_sends_soil_lines_from_the_scene_start(twin, tmp_path):
+    """Building the rig's engines can take seconds of wall time (the soil profile's first
+    compile on a fresh machine: an hour of scene time at 1500x); the scene starts when the
+    rig does, and the thermocouple lines due from then on are all sent."""
+    import copy
+    import time
+
+    import serial
+
+    from clearfast_gis.simulate.devices import DeviceRig
+
+    slow = copy.copy(twin)
+    slow.soil_log = lambda: (time.sleep(2.0), twin.soil_log())[1]  # 50 min of scene time
+    with DeviceRig(slow, tmp_path, time_scale=SCALE) as rig:
+        port = serial.Serial(rig.devices["soil"].path, 9600, timeout=0.05)
+        first_t = None
+        deadline = time.monotonic() + 10.0
+        while first_t is None and time.monotonic() < deadline:
+            for line in port.read(4096).decode().splitlines():
+                if line.startswith("T,"):
+                    first_t = parse_utc(line.split(",")[1])
+                    break
+        port.close()
+    # the first 10-minute record after the start arrives within 0.4 s (wall): well before
+    # the 50 minutes building the engine took
+    assert first_t is not None and first_t <= twin.start_s + 1800.0

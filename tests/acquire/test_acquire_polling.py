@@ -10,7 +10,11 @@ import pytest
 
 from clearfast_gis.acquire import PortSpec, ThermocoupleLogger, WeatherStationLogger, open_port
 from clearfast_gis.acquire.ptydevice import PtyDevice
-from clearfast_gis.simulate.devices import SimulatedTemperatureLogger, SimulatedWeatherStation
+from clearfast_gis.simulate.devices import (
+    ScheduledLines,
+    SimulatedTemperatureLogger,
+    SimulatedWeatherStation,
+)
 from clearfast_gis.survey import (
     BlackbodyLog,
     SoilLog,
@@ -133,6 +137,22 @@ def test_temperature_logger_soil_and_blackbody_lines(tmp_path):
     text = (tmp_path / "blackbody" / "temperatures.csv").read_text()
     assert text.splitlines()[:2] == ["time_utc,bb1_c,bb2_c", "2026-11-15T00:00:00Z,25.0000,15.0000"]
     assert logger.status()["last_blackbody"]["temp_c"] == [25.02, 14.96]
+
+
+def test_scheduled_lines_restart_with_the_scene_clock():
+    """A rig builds its engines (the soil profile can take seconds: a first compile) and then
+    sets the scene clock back to the start: after restart() every line due from then on is
+    sent."""
+    clock = SceneClock(T0 + 5000.0)  # the clock ran on while the engine was built
+    engine = ScheduledLines(T0 + 600.0 * np.arange(12), lambda k: b"%d\r\n" % k, clock)
+    clock.t = T0 - 1.0  # set back
+    engine.restart()
+    assert engine.pending_output() == b"" and not engine.finished
+    clock.t = T0 + 1200.0
+    assert engine.pending_output() == b"0\r\n1\r\n2\r\n"
+    clock.t = T0 + 7000.0
+    assert engine.pending_output() == b"".join(b"%d\r\n" % k for k in range(3, 12))
+    assert engine.finished
 
 
 @pytest.mark.parametrize("line", ["B,2026-11-15T00:00:00Z,25.0", "B,yesterday,25,15",

@@ -33,6 +33,7 @@ from clearfast_gis.atomic import write_text
 from clearfast_gis.simulate.devices.camera import TwinCamera
 from clearfast_gis.simulate.devices.clock import TwinClock
 from clearfast_gis.simulate.devices.gnss import SimulatedGnss
+from clearfast_gis.simulate.devices.scheduled import ScheduledLines
 from clearfast_gis.simulate.devices.templogger import SimulatedTemperatureLogger
 from clearfast_gis.simulate.devices.weather import SimulatedWeatherStation
 from clearfast_gis.simulate.instruments import SOIL_DEPTHS_M
@@ -217,6 +218,8 @@ class DeviceRig:
                 self.gnss.lose_fix(t0, t0 + f.duration_s, 0)
         self.clock.restart()  # scene time starts now, not when the twin was set up
         for dev in self.devices.values():
+            if isinstance(dev.engine, ScheduledLines):  # built while the clock ran on
+                dev.engine.restart()
             dev.start()
         self.server.start()
         self._thread = threading.Thread(target=self._schedule, daemon=True,

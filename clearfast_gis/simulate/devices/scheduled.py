@@ -11,7 +11,8 @@ class ScheduledLines:
     """Protocol engine sending line ``k`` once the clock passes ``times_s[k]``.
 
     Lines scheduled before the engine starts are never sent (a device talking to nobody):
-    the first line sent is the first one due after creation. Input is ignored.
+    the first line sent is the first one due after creation, or after :meth:`restart` when
+    the scene clock was set back since. Input is ignored.
 
     Parameters
     ----------
@@ -29,7 +30,13 @@ class ScheduledLines:
         self.times_s = np.asarray(times_s, dtype=float)
         self.make_line = make_line
         self.clock = clock
-        self._next = int(np.searchsorted(self.times_s, clock(), side="right"))
+        self._next = 0
+        self.restart()
+
+    def restart(self) -> None:
+        """Send from the scene clock's time now on (after the clock was set back: the lines
+        due meanwhile are sent again, those due before now are skipped)."""
+        self._next = int(np.searchsorted(self.times_s, self.clock(), side="right"))
 
     def feed(self, data: bytes) -> None:
         """Input is ignored (a talker-only device)."""
