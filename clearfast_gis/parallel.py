@@ -94,4 +94,3 @@ def serial_kernels() -> Iterator[None]:
         yield
     finally:
         cv2.setNumThreads(before)
-

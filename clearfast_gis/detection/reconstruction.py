@@ -92,8 +92,6 @@ def _hybrid_dilation(f: np.ndarray, g: np.ndarray) -> None:
                 inq[p] = 1
                 count += 1
     # FIFO propagation; a pixel is in the queue at most once at a time, so n slots suffice
-    if tail == n:
-        tail = 0
     while count > 0:
         p = queue[head]
         head += 1

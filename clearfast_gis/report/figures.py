@@ -134,4 +134,3 @@ def contrast_curve_png(times_s: np.ndarray, contrast_k: np.ndarray,
     """One anomaly's centre-minus-background contrast over the scans, with the model fit
     (see :class:`ContrastCurves` for many)."""
     return ContrastCurves().png(times_s, contrast_k, model_times_s, model_k, title)
-

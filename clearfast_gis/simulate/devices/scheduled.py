@@ -30,13 +30,12 @@ class ScheduledLines:
         self.times_s = np.asarray(times_s, dtype=float)
         self.make_line = make_line
         self.clock = clock
-        self._next = 0
         self.restart()
 
     def restart(self) -> None:
         """Send from the scene clock's time now on (after the clock was set back: the lines
         due meanwhile are sent again, those due before now are skipped)."""
-        self._next = int(np.searchsorted(self.times_s, self.clock(), side="right"))
+        self._next: int = int(np.searchsorted(self.times_s, self.clock(), side="right"))
 
     def feed(self, data: bytes) -> None:
         """Input is ignored (a talker-only device)."""
