@@ -20,8 +20,8 @@ __all__ = ["Gimbal", "LinearScale", "RadiometricFrame", "read_frames"]
 
 
 def read_frames(path: str | PathLike, frame: int | None = None, unit: str | None = None,
-                scale_k: float | None = None, offset_k: float | None = None
-                ) -> list[RadiometricFrame]:
+                scale_k: float | None = None, offset_k: float | None = None,
+                tags: dict | None = None) -> list[RadiometricFrame]:
     """The radiometric frames of one camera file (all, or only number ``frame``).
 
     Parameters
@@ -32,6 +32,8 @@ def read_frames(path: str | PathLike, frame: int | None = None, unit: str | None
         Frame number inside a multi-frame file (0-based).
     unit, scale_k, offset_k
         For TIFFs without the tags stating them (:func:`clearfast_gis.cameras.tiff.read_tiff`).
+    tags : dict, optional
+        The file's exiftool tags when already read (:func:`exiftool.read_tags_many`).
 
     Raises
     ------
@@ -42,7 +44,7 @@ def read_frames(path: str | PathLike, frame: int | None = None, unit: str | None
     path = Path(path)
     if not path.is_file():
         raise InvalidInput("no such file", path)
-    tags = exiftool.read_tags(path)
+    tags = exiftool.read_tags(path) if tags is None else tags
     if flir.is_flir(tags) or str(tags.get("File:FileType", "")).upper() in ("SEQ", "CSQ"):
         return flir.read_flir(path, tags, frame)
     if dji.is_dji_rjpeg(tags):

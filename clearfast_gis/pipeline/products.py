@@ -252,6 +252,8 @@ def base_manifest(survey, epsg: int, options, scan_records: dict[int, dict], fix
     root = Path(survey.root).resolve()  # survey.path() resolves; the root may be relative
     for key in ("survey", "mission", "frames", "blackbody_frames", "blackbody_log", "gnss",
                 "weather", "soil"):
+        if key != "survey" and key not in survey.manifest["files"]:
+            continue  # no blackbodies with a radiometric camera
         p = root / "survey.json" if key == "survey" else survey.path(key)
         inputs[p.relative_to(root).as_posix()] = sha256_file(p)
     return {

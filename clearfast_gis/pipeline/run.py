@@ -86,6 +86,8 @@ def _input_key(survey, options: ProcessOptions) -> str:
     h = hashlib.sha256()
     h.update(json.dumps(survey.manifest, sort_keys=True).encode())
     for key in ("frames", "blackbody_frames", "blackbody_log", "gnss", "weather", "soil"):
+        if key not in survey.manifest["files"]:  # blackbodies of a radiometric camera
+            continue
         p = survey.path(key)
         st = p.stat()
         h.update(f"{key}:{st.st_size}:{st.st_mtime_ns}".encode())
@@ -146,6 +148,8 @@ def _check_blackbody_pairs(events, survey) -> None:
     """Refuse a degenerate blackbody pair (same temperature, or same counts everywhere)."""
     from clearfast_gis.radiometry.calibration import DEFAULT_MIN_CONTRAST_COUNTS
 
+    if not isinstance(events, list):  # a radiometric camera's own calibration
+        return
     for ev in events:
         when = format_utc(ev.time_s, "seconds")
         if not abs(ev.t_bb1_k - ev.t_bb2_k) >= MIN_BLACKBODY_DIFFERENCE_K:
