@@ -23,7 +23,8 @@ from clearfast_gis.cli.options import make_progress, overwrite_opt, progress_opt
 @click.option("--scenario", "scenario_path",
               type=click.Path(exists=True, dir_okay=False, readable=True),
               help="Scenario JSON (schemas/scenario.schema.json): overrides and objects.")
-@click.option("--camera-format", type=click.Choice(["tlinear", "celsius-tiff"]), default=None,
+@click.option("--camera-format", type=click.Choice(["flir-rjpeg", "tlinear", "celsius-tiff"]),
+              default=None,
               help="Write the frames as a radiometric camera does (one LWIR band, no "
               "blackbodies): OUT becomes a folder for clearfast import (docs/import.md).")
 @overwrite_opt

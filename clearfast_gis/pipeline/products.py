@@ -239,6 +239,7 @@ def base_manifest(survey, epsg: int, options, scan_records: dict[int, dict], fix
     behind the fit, and how many frames an individual MI correction moved.
     """
     from clearfast_gis.export.manifest import sha256_file
+    from clearfast_gis.radiometry.camera_check import camera_blackbody_check
 
     scans = [{"scan": int(s), "time_utc": format_utc(r["time_s"]),
               "file": f"mosaics/scan_{int(s):03d}.tif",
@@ -264,6 +265,7 @@ def base_manifest(survey, epsg: int, options, scan_records: dict[int, dict], fix
         "software": {"name": "clearfast-gis", "version": __version__},
         "survey_path": str(Path(survey.root).resolve()),
         "inputs": inputs,
+        **({"camera_check": check} if (check := camera_blackbody_check(survey)) else {}),
         "parameters": options.as_dict(),
         "bands": [{"name": b.name, "lambda_min_um": b.lambda_min_um,
                    "lambda_max_um": b.lambda_max_um} for b in survey.bands],

@@ -153,3 +153,43 @@ def test_jpeg_without_radiometric_data_is_refused(tmp_path):
     Image.fromarray(np.zeros((8, 8), np.uint8)).save(tmp_path / "photo.jpg")
     with pytest.raises(InvalidInput, match="photo.jpg: no radiometric data"):
         read_frames(tmp_path / "photo.jpg")
+
+
+@pytest.mark.parametrize("kind", ["fff", "jpg"])
+def test_written_flir_files_read_back_through_exiftool(tmp_path, kind):
+    from datetime import UTC, datetime
+
+    from clearfast_gis.cameras.flir_write import fff_bytes, write_fff, write_rjpeg
+
+    raw = (np.arange(60 * 80).reshape(60, 80) % 900 + 3000).astype(np.uint16)
+    p = params(emissivity=0.9, distance_m=12.0, rh_pct=40.0)
+    when = datetime(2026, 11, 15, 6, 30, 1, 250000, tzinfo=UTC)
+    record = fff_bytes(raw, PLANCK, p, when, fov_deg=24.0)
+    path = tmp_path / f"f.{kind}"
+    if kind == "fff":
+        write_fff(path, record)
+    else:
+        write_rjpeg(path, record, (raw // 16).astype(np.uint8))
+    frame, = read_frames(path)
+    assert frame.format == ("flir-fff" if kind == "fff" else "flir-rjpeg")
+    np.testing.assert_array_equal(frame.raw, raw)
+    assert frame.planck == PLANCK and frame.time == when
+    got, want = frame.object_params, p
+    for name in ("emissivity", "distance_m", "rh_pct", "reflected_c", "atmosphere_c"):
+        assert getattr(got, name) == pytest.approx(getattr(want, name), abs=1e-4), name
+    # float32 storage of the parameters moves the object temperature by far under 0.01 K
+    np.testing.assert_allclose(frame.object_temperature_c(),
+                               object_temperature_c(raw, PLANCK, p), atol=1e-3)
+
+
+def test_twin_flir_frames_keep_the_at_sensor_temperature(tmp_path):
+    from clearfast_gis.simulate.camera_files import TWIN_FLIR_PLANCK, write_frame
+    from clearfast_gis.timeutil import parse_utc
+
+    t_k = 285.0 + np.linspace(0.0, 30.0, 128 * 160).reshape(128, 160)
+    t_s = parse_utc("2026-11-15T12:00:00.500Z")
+    name = write_frame(tmp_path, "a", t_k, "flir-rjpeg", t_s)
+    frame, = read_frames(tmp_path / name)
+    back = TWIN_FLIR_PLANCK.temperature_k(frame.raw)
+    assert np.max(np.abs(back - t_k)) < 0.015  # half a count at ~50 counts per K
+    assert frame.time.timestamp() == pytest.approx(t_s, abs=1e-3)
