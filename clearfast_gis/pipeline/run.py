@@ -72,7 +72,7 @@ def _survey_epsg(survey, gnss) -> int:
     crs = survey.manifest.get("crs") or {}
     if crs.get("epsg"):
         return int(crs["epsg"])
-    ok = gnss.fix_quality > 0
+    ok = gnss.usable
     if not np.any(ok):
         raise InvalidInput("no GNSS fix to choose the UTM zone", survey.label("gnss"))
     i = int(np.flatnonzero(ok)[0])
@@ -114,6 +114,7 @@ def _pixel_size(survey, options: ProcessOptions) -> float:
 def open_context(survey_path: str | Path, progress: Progress = NULL_PROGRESS):
     """Read everything the chain needs from a survey folder (after validation)."""
     from clearfast_gis.survey import read_nmea, read_survey, read_toa5, validate_survey
+    from clearfast_gis.survey.nmea import gnss_checksums
 
     report = validate_survey(survey_path)
     if not report.valid:
@@ -124,7 +125,8 @@ def open_context(survey_path: str | Path, progress: Progress = NULL_PROGRESS):
     for w in report.warnings:
         progress.message(f"warning: {w.line()}")
     survey = read_survey(survey_path)
-    gnss = read_nmea(survey.path("gnss"), fallback_date_s=survey.start_s)
+    gnss = read_nmea(survey.path("gnss"), fallback_date_s=survey.start_s,
+                     checksums=gnss_checksums(survey.manifest))
     epsg = _survey_epsg(survey, gnss)
     track = smooth_static_track(platform_track(
         gnss, epsg, float(survey.manifest["site"]["ground_altitude_m"]),

@@ -19,7 +19,7 @@ from clearfast_gis.survey._text import read_text
 from clearfast_gis.survey.logs import parse_blackbody_log, parse_markers, parse_soil_log
 from clearfast_gis.survey.manifest import manifest_problems, parse_json, resolve_inside
 from clearfast_gis.survey.model import MANIFEST_NAME
-from clearfast_gis.survey.nmea import FIX_RTK_FIXED, FIX_RTK_FLOAT, parse_nmea
+from clearfast_gis.survey.nmea import FIX_RTK_FIXED, FIX_RTK_FLOAT, gnss_checksums, parse_nmea
 from clearfast_gis.survey.tables import parse_blackbody_frames_table, parse_frames_table
 from clearfast_gis.survey.tiff import tiff_info
 from clearfast_gis.survey.toa5 import parse_toa5
@@ -277,21 +277,32 @@ def validate_survey(path: str | os.PathLike, gnss_gap_s: float = 10.0,
     if "gnss" in files and (gt := ck.text(files["gnss"], "gnss")) is not None:
         label = files["gnss"]
         with ck.guard(label):
-            log = parse_nmea(gt, label, start_s)
+            log = parse_nmea(gt, label, start_s, gnss_checksums(manifest))
             counts = log.fix_counts()
             n = len(log)
             n_fixed = counts.get(FIX_RTK_FIXED, 0)
             summary["gnss_epochs"] = n
             summary["fix_quality_counts"] = {str(k): v for k, v in sorted(counts.items())}
             summary["rtk_fixed_share"] = n_fixed / n if n else 0.0
-            if log.n_bad_checksum:
-                ck.warn(label, f"line {log.bad_checksum_lines[0]}",
-                        f"{log.n_bad_checksum} line(s) with a wrong checksum skipped")
-            if log.n_unparseable:
-                ck.warn(label, f"line {log.unparseable_lines[0]}",
-                        f"{log.n_unparseable} line(s) that are not NMEA GGA/RMC skipped")
-            if n - counts.get(0, 0) == 0:
-                ck.problem(label, "GGA", "no epoch has a position fix (fix quality 0 throughout)")
+            for lines, what in (
+                    (log.bad_checksum_lines, "line(s) with a wrong checksum skipped"),
+                    (log.no_checksum_lines, "line(s) without a checksum skipped (survey.json "
+                     '"gnss": {"checksums": "optional"} accepts them)'),
+                    (log.unparseable_lines, "line(s) that are not NMEA sentences skipped"),
+                    (log.untimed_gga_lines, "GGA sentence(s) without a time skipped"),
+                    (log.implausible_date_lines, "RMC/ZDA date(s) more than 7 days from "
+                     "time.start_utc ignored"),
+                    (log.prefixed_lines, "line(s) with other bytes before the sentence (read "
+                     "from its $)")):
+                if lines:
+                    ck.warn(label, f"line {lines[0]}", f"{len(lines)} {what}")
+            n_usable = int(np.count_nonzero(log.usable))
+            not_measured = int(np.count_nonzero(np.isin(log.fix_quality, (6, 7, 8))))
+            if not_measured:
+                ck.warn(label, "GGA", f"{not_measured} epoch(s) of fix quality 6-8 (dead "
+                        "reckoning, manual, simulator) are not position fixes")
+            if n_usable == 0:
+                ck.problem(label, "GGA", "no epoch has a position fix (fix quality 1-5)")
             elif n_fixed == 0:
                 ck.warn(label, "GGA", "no RTK-fixed epoch (fix quality 4): positions are "
                         "metre-level, not centimetre-level")
@@ -299,7 +310,7 @@ def validate_survey(path: str | os.PathLike, gnss_gap_s: float = 10.0,
                 ck.warn(label, "GGA", f"{counts[FIX_RTK_FLOAT]} RTK float epoch(s)")
             order(label, log.time_s)
             summary["gnss_gaps"] = _report_gaps(ck, label, "time", log.time_s, gnss_gap_s)
-            valid = log.fix_quality > 0
+            valid = log.usable
             coverage(label, log.time_s[valid], "position fixes")
             if frames is not None and len(frames) and valid.any():
                 _check_fix_gaps(ck, label, np.sort(log.time_s[valid]), frames.time_s)

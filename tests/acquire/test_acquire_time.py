@@ -66,9 +66,11 @@ def test_logger_reports_receiver_time_and_fix_changes(tmp_path):
         g.feed((gga_sentence(t, lat, 33.0, 100.0, q, 12, 0.8) + "\r\n" + zda_sentence(t)
                 + "\r\n" + rmc_sentence(t, lat, 33.0, valid=q > 0) + "\r\n").encode())
     g.log.close()
-    # one ZDA and one RMC per epoch, each with the arrival of its batch
-    assert [t for t, _ in times] == [T0 + k for k in range(6) for _ in (0, 1)]
-    assert [m for _, m in times] == [100 + k for k in range(6) for _ in (0, 1)]
+    # one ZDA per epoch and one RMC per epoch with a fix (a void RMC never gives the time),
+    # each with the arrival of its batch
+    valid = [(0, 1) if q > 0 else (0,) for q in quality]
+    assert [t for t, _ in times] == [T0 + k for k in range(6) for _ in valid[k]]
+    assert [m for _, m in times] == [100 + k for k in range(6) for _ in valid[k]]
     assert g.time_s == T0 + 5
     # GGA at 00:00:01 (k = 3) is dated by the previous ZDA of 23:59:59 + rollover
     assert g.fix.time_s == T0 + 5 and g.fix.fix_name == "RTK fixed"

@@ -190,8 +190,8 @@ PROBLEMS = {
                                     "folder)"),
     "bad_json": (_bad_json, "survey.json: line 2 column 8: not valid JSON: Expecting ':' "
                             "delimiter"),
-    "no_fix": (_no_fix, "gnss.nmea: GGA: no epoch has a position fix (fix quality 0 "
-                        "throughout)"),
+    "no_fix": (_no_fix, "gnss.nmea: GGA: no epoch has a position fix (fix quality "
+                        "1-5)"),
     "gnss_short": (_gnss_short, "gnss.nmea: position fixes from 2026-11-15T00:00:00Z to "
                                 "2026-11-15T00:08:10Z does not cover the frames"),
     "fix_gap": (_fix_gap, "gnss.nmea: GGA: 6 frame(s) farther than 600 s from any position "
