@@ -8,11 +8,12 @@ with the host's monotonic clock at their arrival and extrapolates::
     now = max_i (utc_i + time_scale * (mono_now - mono_i))
 
 The maximum picks the sentence that arrived with the least delay (serial latency only ever
-makes a sentence late), and the result never goes backwards. A time sentence that disagrees
-with the extrapolation by more than ``max_jump_s`` (a receiver's cold-start or week-rollover
-date that passed the logger's checks) is refused once :data:`LOCK_AFTER` consistent sentences
-have been seen, so one bad sentence never moves the survey clock; before that lock, a
-disagreeing sentence restarts the count (the latest receiver time wins). ``time_scale`` is 1
+makes a sentence late), and the result never goes backwards. The clock gives a time once
+:data:`LOCK_AFTER` consecutive time sentences agree (within ``max_jump_s``); after that lock a
+sentence that disagrees with the extrapolation by more than ``max_jump_s`` (a receiver's
+cold-start or week-rollover date that passed the logger's checks) is refused, so one bad
+sentence never moves the survey clock; before the lock, a disagreeing sentence restarts the
+count. ``time_scale`` is 1
 for a real receiver; a device simulator running its scene faster than real time (``clearfast
 simulate-devices --time-scale``) announces its factor in the ports file, so that the same code
 waits 4 h of scene time in 4 h / time_scale of wall time. The accuracy is the latency of the
@@ -32,7 +33,7 @@ from collections.abc import Callable
 from clearfast_gis.errors import ClearfastError
 
 #: consistent time sentences after which the clock refuses a sentence that jumps
-LOCK_AFTER = 3
+LOCK_AFTER = 2
 
 #: wall seconds a time sentence may arrive late (a busy host) on top of ``max_jump_s``
 LATE_WALL_S = 10.0
@@ -134,16 +135,18 @@ class GnssClock(SurveyClock):
                     self._consistent = 0
             self._recent.append((utc, arrived))
             self._consistent += 1
-        self._ready.set()
+            locked = self._consistent >= LOCK_AFTER
+        if locked:
+            self._ready.set()
         return True
 
     @property
     def ready(self) -> bool:
-        """True once a time sentence has been received."""
+        """True once :data:`LOCK_AFTER` consecutive time sentences agreed."""
         return self._ready.is_set()
 
     def wait_ready(self, timeout_s: float) -> bool:
-        """Wait up to ``timeout_s`` wall seconds for the first time sentence."""
+        """Wait up to ``timeout_s`` wall seconds for the clock's lock (:attr:`ready`)."""
         return self._ready.wait(timeout_s)
 
     def age_s(self) -> float:
@@ -159,13 +162,16 @@ class GnssClock(SurveyClock):
         Raises
         ------
         ClockError
-            Before the first time sentence.
+            Before the lock (:attr:`ready`).
         """
         mono = self._mono()
         with self._lock:
             if not self._recent:
                 raise ClockError("no UTC time from the GNSS receiver yet (no RMC or ZDA "
                                  "sentence)", "gnss")
+            if self._consistent < LOCK_AFTER:
+                raise ClockError(f"no UTC time from the GNSS receiver yet ({LOCK_AFTER} "
+                                 "consecutive RMC or ZDA sentences must agree)", "gnss")
             t = max(utc + self.time_scale * (mono - m) for utc, m in self._recent)
             self._last = max(self._last, t)
             return self._last
