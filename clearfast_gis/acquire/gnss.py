@@ -6,7 +6,8 @@ ending kept; bad lines too, since the log is the receiver's record and
 checked the way :func:`clearfast_gis.survey.parse_nmea` reads the log
 (:mod:`clearfast_gis.survey.nmea_lines`: junk before ``$``, ``$$``, missing checksums):
 checksum errors and non-NMEA lines are counted; valid RMC (status ``A``, two-digit years placed
-around the host clock's year) and ZDA sentences give the receiver's UTC time (passed on to
+around the host clock's year, not more than a year from it) and ZDA sentences give the
+receiver's UTC time (passed on to
 ``on_time``, which disciplines the survey clock and may refuse a jump,
 :class:`~clearfast_gis.acquire.clock.GnssClock`); GGA sentences update the latest fix (dated by
 the last RMC or ZDA sentence, else by the host clock's date), and a change of fix quality
@@ -38,6 +39,10 @@ from clearfast_gis.timeutil import format_utc
 
 #: half a day, seconds: a GGA time of day this far from the last dated one crossed midnight
 _HALF_DAY_S = 43200.0
+
+#: a receiver time farther than this from the host clock is implausible (a cold start's 1980
+#: date, a GPS week rollover's 19.6 years), seconds; a laptop clock is minutes off, not a year
+MAX_HOST_DISAGREEMENT_S = 366 * 86400.0
 
 #: GGA fix quality -> short name for displays
 FIX_NAMES = {0: "no fix", 1: "GPS", 2: "DGPS", 3: "PPS", 4: "RTK fixed", 5: "RTK float",
@@ -126,7 +131,8 @@ class GnssLogger(LineLogger):
     n_fix_changes : int
         Changes of the fix quality (the first fix included).
     n_refused_times : int
-        Time sentences ``on_time`` refused (returned False: a jump of the survey clock).
+        Time sentences not used: more than :data:`MAX_HOST_DISAGREEMENT_S` from the host
+        clock, or refused by ``on_time`` (it returned False: a jump of the survey clock).
     """
 
     kind = "gnss"
@@ -177,6 +183,13 @@ class GnssLogger(LineLogger):
             return
         self.n_sentences += 1
         if when is not None:
+            if abs(when[0] + when[1] - self._clock()) > MAX_HOST_DISAGREEMENT_S:
+                self.n_refused_times += 1  # a cold-start or week-rollover date
+                if self.n_refused_times == 1:
+                    self.event("time refused", f"receiver date "
+                               f"{format_utc(when[0] + when[1], 'seconds')} is more than a year "
+                               "from the host clock")
+                return
             if self.on_time is not None and self.on_time(when[0] + when[1], arrived) is False:
                 self.n_refused_times += 1  # the survey clock refused a jump
                 return

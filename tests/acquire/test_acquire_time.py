@@ -152,10 +152,13 @@ def test_void_or_implausible_dates_never_move_the_survey_clock(tmp_path):
     for k in range(4):
         mono.t = 1000.0 + k
         g.feed((zda_sentence(T0 + k) + "\r\n").encode())
-    # a valid-looking ZDA of a week-rollover receiver, 1024 weeks off: refused
+    # a valid-looking ZDA of a week-rollover receiver, 1024 weeks off: refused by the logger
+    # (more than a year from the host clock); one two days off: refused by the locked clock
     mono.t = 1004.0
     g.feed((zda_sentence(T0 + 4.0 - 1024 * 7 * 86400.0) + "\r\n").encode())
-    assert g.n_refused_times == 1 and clock.n_refused == 1
+    assert g.n_refused_times == 1 and clock.n_refused == 0
+    g.feed((zda_sentence(T0 + 4.0 - 2 * 86400.0) + "\r\n").encode())
+    assert g.n_refused_times == 2 and clock.n_refused == 1
     assert clock.now() == pytest.approx(T0 + 4.0, abs=1e-6)
     assert g.time_s == T0 + 3.0
     mono.t = 1005.0

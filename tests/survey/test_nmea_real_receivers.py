@@ -225,3 +225,38 @@ def test_property_one_epoch_per_time_whatever_the_talkers(talkers):
         assert log.lat_deg[0] == pytest.approx(35.0 + 1e-5 * best, abs=1e-9)
     else:
         assert math.isnan(log.lat_deg[0])
+
+
+@pytest.mark.parametrize("name", ["gp-320fw-2019-04-07-coldboot", "garmin25lp", "telit-he910",
+                                  "quectel-l76k-nmea", "st-teseo-liv4f"])
+def test_acquire_clock_replaying_real_receivers_never_jumps(name, tmp_path):
+    """Every line of a real capture through the acquisition's GNSS logger: the survey clock
+    follows the receiver's valid time and never takes a void or cold-start date."""
+    import serial
+
+    from clearfast_gis.acquire import GnssLogger
+    from clearfast_gis.acquire.clock import GnssClock
+
+    mono = [1000.0]
+    clock = GnssClock(mono=lambda: mono[0])
+    host = float(read_nmea(NMEA / f"{name}.log").time_s[0]) + 3600.0  # a laptop an hour off
+    g = GnssLogger(serial.serial_for_url("loop://", timeout=0.05), tmp_path / "g.nmea",
+                   clock=lambda: host, on_time=clock.observe, mono=lambda: mono[0])
+    readings = []
+    for raw in (NMEA / f"{name}.log").read_bytes().split(b"\n"):
+        mono[0] += 0.01
+        g.feed(raw + b"\n")
+        if clock.ready:
+            readings.append(clock.now())
+    g.log.close()
+    if name.startswith("gp-320fw"):
+        # one valid 2019 time before the reboot (no lock), then its week-0 1999 dates: refused
+        assert g.n_refused_times > 0
+        assert all(r > parse_utc("2019-04-06T00:00:00Z") for r in readings)
+        return
+    log = read_nmea(NMEA / f"{name}.log")
+    valid_days = {float(np.floor(t / 86400.0)) for t in log.time_s}
+    assert readings, name
+    assert np.all(np.diff(readings) >= 0.0)
+    # the clock stays on the receiver's own valid dates (within a day of its epochs)
+    assert min(abs(np.floor(readings[-1] / 86400.0) - d) for d in valid_days) <= 1
