@@ -24,33 +24,13 @@ import sys
 from pathlib import Path
 
 import numpy as np
-import pynmea2
 
 from clearfast_gis.errors import InvalidInput
 from clearfast_gis.survey.nmea import read_nmea
 from clearfast_gis.survey.stations import read_station_table
+from clearfast_gis.survey.testing import pynmea2_gga_epochs
 
 SHARED = Path(__file__).resolve().parents[2] / "shared" / "data" / "real-field-files"
-
-
-def _pynmea2_epochs(path: Path) -> dict[float, list[tuple[int, float, float]]]:
-    """pynmea2's GGA epochs: time of day -> [(quality, lat, lon)] (cut at the last ``$``)."""
-    out: dict[float, list] = {}
-    text = path.read_bytes().decode("utf-8", "replace")
-    for raw in text.replace("\r", "\n").split("\n"):
-        line = raw.strip()
-        if "$" not in line:
-            continue
-        try:
-            msg = pynmea2.parse(line[line.rfind("$"):], check=True)
-        except (pynmea2.ParseError, pynmea2.ChecksumError, ValueError, AttributeError):
-            continue
-        if isinstance(msg, pynmea2.GGA) and msg.timestamp is not None:
-            ts = msg.timestamp
-            tod = round(ts.hour * 3600 + ts.minute * 60 + ts.second + ts.microsecond * 1e-6, 3)
-            out.setdefault(tod, []).append((int(msg.gps_qual or 0), msg.latitude,
-                                            msg.longitude))
-    return out
 
 
 def check_nmea(path: Path) -> tuple[str, bool]:
@@ -59,7 +39,7 @@ def check_nmea(path: Path) -> tuple[str, bool]:
         log = read_nmea(path)
     except InvalidInput as exc:
         return f"refused: {exc.message[:110]}", bool(exc.message)
-    ref = _pynmea2_epochs(path)
+    ref = pynmea2_gga_epochs(path)
     tods = np.round(np.mod(log.time_s, 86400.0), 3)
     bad = 0
     for k in np.flatnonzero(log.usable):

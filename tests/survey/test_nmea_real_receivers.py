@@ -23,6 +23,7 @@ from clearfast_gis.survey.nmea import (
     rmc_sentence,
 )
 from clearfast_gis.survey.nmea_lines import century_year, classify_line, tod_field
+from clearfast_gis.survey.testing import pynmea2_gga_epochs
 from clearfast_gis.timeutil import parse_utc
 from tests.conftest import SHARED
 
@@ -38,25 +39,8 @@ WITH_EPOCHS = ["ais-nmea", "bt451", "furuno_gl_ga", "garmin25lp", "nmea-rtk",
 
 def _reference(name: str) -> dict[float, list[tuple[int, float, float, int]]]:
     """pynmea2's reading of every GGA with a time: time of day -> [(quality, lat, lon,
-    n_sats)]. Sentences are cut at the line's last ``$``; checksums are checked."""
-    out: dict[float, list] = {}
-    text = (NMEA / f"{name}.log").read_bytes().decode("utf-8", "replace")
-    for raw in text.replace("\r", "\n").split("\n"):
-        line = raw.strip()
-        if "$" not in line:
-            continue
-        try:
-            msg = pynmea2.parse(line[line.rfind("$"):], check=True)
-        except (pynmea2.ParseError, pynmea2.ChecksumError, ValueError, AttributeError):
-            continue
-        if not isinstance(msg, pynmea2.GGA) or msg.timestamp is None:
-            continue
-        ts = msg.timestamp
-        tod = ts.hour * 3600 + ts.minute * 60 + ts.second + ts.microsecond * 1e-6
-        q = int(msg.gps_qual or 0)
-        out.setdefault(round(tod, 3), []).append(
-            (q, msg.latitude, msg.longitude, int(msg.num_sats or 0)))
-    return out
+    n_sats)]."""
+    return pynmea2_gga_epochs(NMEA / f"{name}.log")
 
 
 @pytest.mark.parametrize("name", WITH_EPOCHS)
