@@ -20,8 +20,8 @@ import numpy as np
 
 from clearfast_gis.cameras.survey_import import ImportSpec, import_survey
 from clearfast_gis.cli.import_survey import read_layout
+from clearfast_gis.evaluation.truth import score_against_truth
 from clearfast_gis.pipeline import process_survey
-from clearfast_gis.pipeline.truth import score_against_truth
 from clearfast_gis.simulate import preset, simulate_survey
 from clearfast_gis.simulate.camera_files import radiometric_camera_config, write_camera_folder
 

@@ -52,9 +52,12 @@ class ImportSpec:
     frames : list of Path
         Camera files (folders are expanded to their files, sorted by name).
     poses, gnss, weather, soil, mission : Path
-        Pose table, NMEA log, TOA5 weather log, thermocouple CSV, ``mission.json``.
+        Pose table, NMEA log, TOA5 weather table, thermocouple log, ``mission.json``.
     markers : Path or None
         ``markers.csv``.
+    station_profile : Path or None
+        The weather station's / soil logger's profile (their own column names and units,
+        ``docs/acquire.md``); copied into the survey as ``station_profile.json``.
     antenna_to_camera_m : (3,) floats
         Camera centre minus GNSS antenna, east/north/up of the pan/tilt base, metres.
     pan_zero_azimuth_deg, tilt_zero_deg : float
@@ -85,6 +88,7 @@ class ImportSpec:
     mission: Path
     antenna_to_camera_m: tuple[float, float, float]
     markers: Path | None = None
+    station_profile: Path | None = None
     pan_zero_azimuth_deg: float = 0.0
     tilt_zero_deg: float = 0.0
     lens: str = "pinhole"
@@ -368,19 +372,22 @@ def import_survey(spec: ImportSpec, out: str | os.PathLike, overwrite: bool = Fa
         read_markers,
         read_mission,
         read_soil_log,
-        read_toa5,
         validate_survey,
         write_frames_table,
         write_survey_json,
         write_tiff_stack,
     )
+    from clearfast_gis.survey.station_profiles import read_station_profile
+    from clearfast_gis.survey.stations import PROFILE_KEY, PROFILE_NAME, read_station_table
 
     out = Path(out)
     if out.exists() and not (overwrite and out.is_dir()):
         raise InvalidInput("already exists (--overwrite to replace it)", out)
     mission = read_mission(spec.mission, str(spec.mission))
-    read_toa5(spec.weather, str(spec.weather))
-    read_soil_log(spec.soil, str(spec.soil))
+    profile = None if spec.station_profile is None else read_station_profile(
+        spec.station_profile, str(spec.station_profile))
+    read_station_table(spec.weather, profile, str(spec.weather))
+    read_soil_log(spec.soil, str(spec.soil), profile)
     if spec.markers is not None:
         read_markers(spec.markers, str(spec.markers))
     poses = read_pose_table(spec.poses)
@@ -426,6 +433,9 @@ def import_survey(spec: ImportSpec, out: str | os.PathLike, overwrite: bool = Fa
         if spec.markers is not None:
             shutil.copyfile(spec.markers, tmp / "markers.csv")
             names["markers"] = "markers.csv"
+        if spec.station_profile is not None:
+            shutil.copyfile(spec.station_profile, tmp / PROFILE_NAME)
+            names[PROFILE_KEY] = PROFILE_NAME
         start = math.floor(times.min())
         manifest = {
             "format": "clearfast-survey", "format_version": 1,

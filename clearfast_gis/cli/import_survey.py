@@ -12,7 +12,7 @@ from clearfast_gis.cli.options import make_progress, overwrite_opt, progress_opt
 from clearfast_gis.errors import ClearfastError, InvalidInput
 
 LAYOUT_NAME = "import.json"
-PATH_KEYS = ("poses", "gnss", "weather", "soil", "mission", "markers")
+PATH_KEYS = ("poses", "gnss", "weather", "soil", "mission", "markers", "station_profile")
 
 
 def _triple(text: str | None) -> tuple[float, float, float] | None:
@@ -75,6 +75,9 @@ def read_layout(folder: Path) -> dict:
               help="mission.json of clearfast plan.")
 @click.option("--markers", type=click.Path(exists=True, dir_okay=False),
               help="markers.csv (id,lat_deg,lon_deg,description).")
+@click.option("--station-profile", type=click.Path(exists=True, dir_okay=False),
+              help="Station profile of the weather station / soil logger (their own column "
+              "names and units, docs/acquire.md).")
 @click.option("--antenna-to-camera", "antenna", default=None,
               help="Camera centre minus GNSS antenna, E,N,U metres (pan/tilt base frame).")
 @click.option("--pan-zero-azimuth", type=float, default=None,
