@@ -25,13 +25,23 @@ def command(file, frame_no, output, unit, scale_k, offset_k):
     """Write FILE's object temperature (degrees C, float32 TIFF, rows and columns as the raw
     image is stored) computed with the camera's own emissivity, reflected and atmospheric
     temperature, distance and humidity: the number the camera's software shows."""
-    from clearfast_gis.cameras import read_frames
+    from pathlib import Path
+
+    from clearfast_gis.cameras import exiftool, read_frames
+    from clearfast_gis.cameras.flir import split_records
     from clearfast_gis.cameras.tiff import write_tiff
 
-    frames = read_frames(file, frame=frame_no, unit=unit, scale_k=scale_k, offset_k=offset_k)
-    if len(frames) > 1:
-        raise ClearfastError(f"{file} holds {len(frames)} frames: choose one with --frame N",
-                             exit_code=2)
+    if frame_no is None and Path(file).is_file():  # a sequence needs --frame: say so first
+        tags = exiftool.read_tags(file)
+        if str(tags.get("File:FileType", "")).upper() in ("SEQ", "CSQ"):
+            n = len(split_records(Path(file).read_bytes()))
+            if n > 1:
+                raise ClearfastError(f"{file} holds {n} frames: choose one with --frame N "
+                                     f"(0-{n - 1})", exit_code=2)
+        frames = read_frames(file, unit=unit, scale_k=scale_k, offset_k=offset_k, tags=tags)
+    else:
+        frames = read_frames(file, frame=frame_no, unit=unit, scale_k=scale_k,
+                             offset_k=offset_k)
     fr = frames[0]
     t_c = fr.object_temperature_c()
     write_tiff(output, t_c, "degC")
