@@ -55,10 +55,13 @@ def read_tags(source: str | PathLike, data: bytes | None = None) -> dict[str, An
 
 def read_tags_many(paths: list[str | PathLike]) -> dict[str, dict[str, Any]]:
     """Tags of many files in one exiftool run (starting exiftool dominates for small files):
-    ``{str(path): tags}``; a file exiftool cannot read is an error naming it."""
+    ``{str(path): tags}``, the raw thermal image included as exiftool's ``base64:`` text
+    (:func:`binary_tag`); a file exiftool cannot read is an error naming it."""
     if not paths:
         return {}
-    out = _run(["-j", "-n", "-G1", "-a", "-q", "-q"], paths[0], None, [str(p) for p in paths])
+    out = _run(["-j", "-n", "-G1", "-a", "-q", "-q", "-b", "-all", "-RawThermalImage",
+                "--ThumbnailImage", "--EmbeddedImage", "--PreviewImage"], paths[0], None,
+               [str(p) for p in paths])
     try:
         docs = json.loads(out.decode("utf-8", "replace"))
     except ValueError:
@@ -70,6 +73,16 @@ def read_tags_many(paths: list[str | PathLike]) -> dict[str, dict[str, Any]]:
             raise InvalidInput("exiftool cannot read it", p)
         result[str(p)] = by_name[str(p)]
     return result
+
+
+def binary_tag(tags: dict[str, Any], key: str) -> bytes | None:
+    """The bytes of a binary tag that exiftool put into its JSON (``base64:...``), or None."""
+    import base64
+
+    val = tags.get(key)
+    if isinstance(val, str) and val.startswith("base64:"):
+        return base64.b64decode(val[len("base64:"):])
+    return None
 
 
 def read_binary(source: str | PathLike, tag: str, data: bytes | None = None) -> bytes:

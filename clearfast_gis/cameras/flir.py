@@ -111,7 +111,9 @@ def frame_from_record(source: Path, index: int, fmt: str, tags: dict[str, Any],
         raise InvalidInput("no FLIR radiometric data (RawThermalImage) in the file", source)
     width = int(exiftool.number(tags, "FLIR:RawThermalImageWidth", source))
     height = int(exiftool.number(tags, "FLIR:RawThermalImageHeight", source))
-    blob = exiftool.read_binary(source, "RawThermalImage", data)
+    blob = exiftool.binary_tag(tags, "FLIR:RawThermalImage")
+    if blob is None:
+        blob = exiftool.read_binary(source, "RawThermalImage", data)
     raw = decode_raw(blob, tags.get("FLIR:RawThermalImageType", ""), width, height, source)
     make = tags.get("IFD0:Make") or "FLIR"
     model = tags.get("FLIR:CameraModel") or tags.get("IFD0:Model") or ""
