@@ -36,8 +36,9 @@ def test_demo_products_load_with_styles_time_and_counts(project, demo_products, 
             n = db.execute(f'SELECT COUNT(*) FROM "{name}"').fetchone()[0]
             assert layer.featureCount() == n, name
     suspects = loaded.vectors["suspects"]
-    assert suspects.renderer().type() == "categorizedSymbol"
-    assert {c.value() for c in suspects.renderer().categories()} >= {"at_mine", "ap_mine"}
+    assert suspects.renderer().type() == "RuleRenderer"
+    assert {r.label() for r in suspects.renderer().rootRule().children()} >= {
+        "AT mine indication", "AP mine indication", "Clutter"}
     assert len(loaded.mosaics) == len(manifest["scans"]) == 6
     for layer in loaded.mosaics:
         assert layer.isValid() and layer.crs().authid() == "EPSG:32636"

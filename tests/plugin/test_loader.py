@@ -51,13 +51,16 @@ def test_styles_from_geopackage_applied(loaded):
 
     suspects = loaded.vectors["suspects"]
     renderer = suspects.renderer()
-    assert renderer.type() == "categorizedSymbol"
-    assert renderer.classAttribute() == "class_cue"
-    colours = {c.value(): c.symbol().color().name() for c in renderer.categories()}
-    assert colours == {"at_mine": "#e31a1c", "ap_mine": "#e31a1c", "unknown": "#ff7f00",
-                       "clutter": "#969696"}
+    assert renderer.type() == "RuleRenderer"
+    rules = {r.label(): r for r in renderer.rootRule().children()}
+    colours = {label: r.symbol().color().name() for label, r in rules.items()}
+    assert colours == {"AT mine indication": "#e31a1c", "AP mine indication": "#e31a1c",
+                       "Other suspect": "#ff7f00", "Clutter": "#969696"}
+    assert {label: r.active() for label, r in rules.items()} == {
+        "AT mine indication": True, "AP mine indication": True, "Other suspect": True,
+        "Clutter": False}
     assert suspects.labelsEnabled()
-    assert suspects.labeling().settings().fieldName == "anomaly_id"
+    assert suspects.labeling().type() == "rule-based"
     assert suspects.geometryType() == QgsWkbTypes.PointGeometry
     outlines = loaded.vectors["anomalies"].renderer()
     assert outlines.type() == "categorizedSymbol" and outlines.classAttribute() == "polarity"
