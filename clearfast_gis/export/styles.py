@@ -25,6 +25,12 @@ LAYER_STYLES: dict[str, str] = {
 ``scripts/build_suspects_style.py`` (the set-aside ``candidates`` share it)."""
 
 MINE_ACTION_STYLE = "mine_action.qml"
+MINE_ACTION_LAYER_STYLES: dict[str, str] = {
+    "indications": MINE_ACTION_STYLE,
+    "hazard_proposals": "hazard_proposals.qml",
+    "surveyed_area": "surveyed_area.qml",
+}
+"""Layer of ``mine_action.gpkg`` -> QML file of its default style."""
 MOSAIC_STYLE = "mosaic.qml"
 
 CLASS_COLOURS_RGB: dict[str, tuple[int, int, int]] = {
@@ -52,8 +58,14 @@ def default_styles(layers: Iterable[str] | None = None) -> dict[str, str]:
 
 
 def mine_action_style() -> str:
-    """QML of the mine-action indications layer (class colours, labelled by ``hazard_id``)."""
+    """QML of the mine-action indications layer (class colours, labelled by ``imsma_id``)."""
     return style_text(MINE_ACTION_STYLE)
+
+
+def mine_action_styles() -> dict[str, str]:
+    """Default styles of the ``mine_action.gpkg`` layers: layer name -> QML text (evidence by
+    class colour, hazard proposals red, the surveyed area a dashed outline)."""
+    return {layer: style_text(name) for layer, name in MINE_ACTION_LAYER_STYLES.items()}
 
 
 def mosaic_ramp_stops() -> list[tuple[float, tuple[int, int, int]]]:

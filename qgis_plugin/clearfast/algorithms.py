@@ -203,33 +203,69 @@ class RerunDetectionAlgorithm(ToolkitAlgorithm):
 class ExportMineActionAlgorithm(ToolkitAlgorithm):
     NAME = "exportmineaction"
     TITLE = "Export for a mine action centre"
-    HELP = ("Write a WGS84 GeoPackage and a CSV of the suspects with the fields a national mine "
-            "action database imports (stable ids, lat/lon, UTM, survey date, method, evidence, "
-            "confidence, depth, diameter, class cue, GNSS fix, status). Every point is an "
-            "indication, never a confirmed hazardous area.")
+    HELP = ("Write what IMSMA Core imports without editing (WGS84 GeoPackage and CSV tables, "
+            "field names of at most 31 characters, imsma_id and imsma_links): the surveyed "
+            "area, suspected-hazard polygon proposals around clusters of mine indications, and "
+            "the evidence points (suspects from the stated mine likelihood, or all) linked to "
+            "them. The evidence is indirect: proposals are to review, never confirmed hazards. "
+            "The organisation defaults to the QGIS setting clearfast/organisation.")
 
     def initAlgorithm(self, config=None):
+        from qgis.core import (
+            QgsProcessingParameterBoolean,
+            QgsProcessingParameterString,
+            QgsSettings,
+        )
+
         self.addParameter(QgsProcessingParameterFile(
             "PRODUCTS", "Products folder", behavior=QgsProcessingParameterFile.Folder))
+        self.addParameter(QgsProcessingParameterNumber(
+            "MIN_LIKELIHOOD", "Mine likelihood from which a suspect is evidence (0-1)",
+            QgsProcessingParameterNumber.Double, 0.5, False, 0.0, 1.0))
+        self.addParameter(QgsProcessingParameterBoolean(
+            "ALL_SUSPECTS", "Export every suspect as evidence", False))
+        self.addParameter(QgsProcessingParameterNumber(
+            "HAZARD_BUFFER", "Hazard polygon radius around each mine indication (m)",
+            QgsProcessingParameterNumber.Double, 5.0, False, 0.1, 1000.0))
+        self.addParameter(QgsProcessingParameterString(
+            "ORGANISATION", "Surveying organisation",
+            str(QgsSettings().value("clearfast/organisation", "")), optional=True))
         self.addParameter(QgsProcessingParameterFolderDestination("OUTPUT", "Output folder"))
         self.addOutput(QgsProcessingOutputVectorLayer(
             "INDICATIONS", "Mine action indications", QgsProcessing.TypeVectorPoint))
+        self.addOutput(QgsProcessingOutputVectorLayer(
+            "HAZARDS", "Hazard polygon proposals", QgsProcessing.TypeVectorPolygon))
+        self.addOutput(QgsProcessingOutputVectorLayer(
+            "SURVEYED_AREA", "Surveyed area", QgsProcessing.TypeVectorPolygon))
         self.addOutput(QgsProcessingOutputFile("CSV", "Mine action CSV"))
         self.addOutput(QgsProcessingOutputNumber("COUNT", "Number of indications"))
 
     def processAlgorithm(self, parameters, context, feedback):
         folder = self.parameterAsFile(parameters, "PRODUCTS", context)
         out = self.parameterAsString(parameters, "OUTPUT", context)
-        result = self.check(self.run_cli(
-            ["export", folder, "--mine-action", "-o", out, "--progress", "json"], feedback))
+        args = ["export", folder, "--mine-action", "-o", out,
+                "--min-likelihood",
+                repr(self.parameterAsDouble(parameters, "MIN_LIKELIHOOD", context)),
+                "--hazard-buffer",
+                repr(self.parameterAsDouble(parameters, "HAZARD_BUFFER", context))]
+        if self.parameterAsBool(parameters, "ALL_SUSPECTS", context):
+            args.append("--all-suspects")
+        organisation = self.parameterAsString(parameters, "ORGANISATION", context)
+        if organisation:
+            args += ["--organisation", organisation]
+        result = self.check(self.run_cli([*args, "--progress", "json"], feedback))
         gpkg = os.path.join(out, "mine_action.gpkg")
-        uri = gpkg_uri(gpkg, "indications")
-        if not self.load_on_completion(context, uri, "Mine action indications"):
-            raise QgsProcessingException(f"{gpkg}: the export wrote no indications layer")
-        count = next((e.get("count") for e in result.events if e.get("event") == "result"),
-                     None)
-        return {"OUTPUT": out, "INDICATIONS": uri, "CSV": os.path.join(out, "mine_action.csv"),
-                "COUNT": count}
+        outputs = {"OUTPUT": out, "CSV": os.path.join(out, "mine_action.csv")}
+        for key, layer, title in (("SURVEYED_AREA", "surveyed_area", "Surveyed area"),
+                                  ("HAZARDS", "hazard_proposals", "Hazard polygon proposals"),
+                                  ("INDICATIONS", "indications", "Mine action indications")):
+            uri = gpkg_uri(gpkg, layer)
+            if not self.load_on_completion(context, uri, title):
+                raise QgsProcessingException(f"{gpkg}: the export wrote no {layer} layer")
+            outputs[key] = uri
+        outputs["COUNT"] = next(
+            (e.get("count") for e in result.events if e.get("event") == "result"), None)
+        return outputs
 
 
 class ValidateSurveyAlgorithm(ToolkitAlgorithm):

@@ -115,7 +115,7 @@ def test_default_styles_layers_and_class_colours():
     assert root.find(".//labeling").get("type") == "rule-based"
     assert root.find(".//labeling//text-style").get("fieldName") == "short_id"
     assert ET.fromstring(mine_action_style()).find(
-        ".//labeling/settings/text-style").get("fieldName") == "hazard_id"
+        ".//labeling/settings/text-style").get("fieldName") == "imsma_id"
 
 
 def test_mosaic_style_stretch():

@@ -70,5 +70,5 @@ def test_qgis_process_export_with_real_toolkit(qgis_env, products, tmp_path):
                           f"PRODUCTS={products.root}", f"OUTPUT={out}"], env)
     assert r.returncode == 0, r.stderr
     doc = json.loads(r.stdout[r.stdout.index("{"):])
-    assert doc["results"]["COUNT"] == products.n_suspects
-    assert (out / "mine_action.csv").is_file()
+    assert doc["results"]["COUNT"] == 4  # the AT/AP mine indications
+    assert (out / "mine_action.csv").is_file() and (out / "hazard_proposals.csv").is_file()
