@@ -63,8 +63,8 @@ def _cm(value: str) -> str:
     return f"format_number({value}, 1)"
 
 
-def _percent(value: str) -> str:
-    return (f"CASE WHEN {value} IS NULL THEN NULL "
+def _percent(value: str, missing: str = "NULL") -> str:
+    return (f"CASE WHEN {value} IS NULL THEN {missing} "
             f"ELSE format_number(100 * {value}, 0) || ' %' END")
 
 
@@ -76,7 +76,8 @@ VIRTUAL_FIELDS = (
     ("diffusivity", "String",
      _with_sigma('"diffusivity_m2s" * 1e6', '"diffusivity_sigma_m2s" * 1e6', _sig2, "mm²/s"),
      "Thermal diffusivity ± 1σ"),
-    ("likelihood", "String", _percent("attribute('p_mine')"), "Mine likelihood"),
+    ("likelihood", "String", _percent("attribute('p_mine')", "'not estimated'"),
+     "Mine likelihood"),
     ("cue_confidence_pct", "String",
      _percent("coalesce(attribute('cue_confidence'), attribute('confidence'))"),
      "Class cue confidence"),
@@ -215,6 +216,7 @@ def form(layer) -> None:
     root = config.invisibleRootContainer()
     for tab_name, groups in FORM:
         tab = QgsAttributeEditorContainer(tab_name, root)
+        tab.setIsGroupBox(False)  # a tab (containers default to group boxes)
         for group_name, names in groups:
             group = QgsAttributeEditorContainer(group_name, tab)
             group.setIsGroupBox(True)

@@ -1,42 +1,42 @@
 <!DOCTYPE qgis PUBLIC 'http://mrcc.com/qgis.dtd' 'SYSTEM'>
-<qgis version="3.22.16-Białowieża" minScale="100000000" hasScaleBasedVisibilityFlag="0" simplifyMaxScale="1" symbologyReferenceScale="-1" styleCategories="Symbology|Labeling|Fields|Forms|MapTips|AttributeTable|Rendering" simplifyDrawingTol="1" simplifyAlgorithm="0" simplifyDrawingHints="1" maxScale="0" simplifyLocal="1" labelsEnabled="1">
-  <renderer-v2 type="RuleRenderer" referencescale="-1" symbollevels="0" forceraster="0" enableorderby="1">
-    <rules key="{22dc7556-ac86-4cf2-b3c1-bec48f62d54a}">
-      <rule symbol="0" label="AT mine indication" key="{08a32170-a57a-4a57-b7e6-43257bdf0b3b}" filter="&quot;class_cue&quot; = 'at_mine'"/>
-      <rule symbol="1" label="AP mine indication" key="{22f1a81d-a3f9-4a22-bb5b-59b2e93167b6}" filter="&quot;class_cue&quot; = 'ap_mine'"/>
-      <rule symbol="2" label="Other suspect" key="{ae9a5b10-d81d-4ba3-8412-c56e73979ddf}" filter="&quot;class_cue&quot; NOT IN ('at_mine', 'ap_mine', 'clutter') OR &quot;class_cue&quot; IS NULL"/>
-      <rule checkstate="0" symbol="3" label="Clutter" key="{2d33a244-dc1e-46a9-9991-0d03a7a28c45}" filter="&quot;class_cue&quot; = 'clutter'"/>
+<qgis styleCategories="Symbology|Labeling|Fields|Forms|MapTips|AttributeTable|Rendering" simplifyDrawingTol="1" simplifyAlgorithm="0" simplifyLocal="1" simplifyDrawingHints="1" minScale="100000000" version="3.22.16-Białowieża" hasScaleBasedVisibilityFlag="0" labelsEnabled="1" simplifyMaxScale="1" maxScale="0" symbologyReferenceScale="-1">
+  <renderer-v2 symbollevels="0" type="RuleRenderer" enableorderby="1" forceraster="0" referencescale="-1">
+    <rules key="{84f8de85-18d9-4393-a96e-9cf86462e3ba}">
+      <rule filter="&quot;class_cue&quot; = 'at_mine'" symbol="0" key="{ee0561ab-c57e-4c67-85f8-423c239f0d3c}" label="AT mine indication"/>
+      <rule filter="&quot;class_cue&quot; = 'ap_mine'" symbol="1" key="{19510607-75e8-4c8b-8e79-48d48d6f5915}" label="AP mine indication"/>
+      <rule filter="&quot;class_cue&quot; NOT IN ('at_mine', 'ap_mine', 'clutter') OR &quot;class_cue&quot; IS NULL" symbol="2" key="{12b6de09-25fa-4818-b4ba-f1145367e3bd}" label="Other suspect"/>
+      <rule filter="&quot;class_cue&quot; = 'clutter'" checkstate="0" symbol="3" key="{2e3064d8-85af-4c96-8037-00c3d17c3378}" label="Clutter"/>
     </rules>
     <symbols>
-      <symbol type="marker" alpha="1" clip_to_extent="1" force_rhr="0" name="0">
+      <symbol force_rhr="0" type="marker" name="0" clip_to_extent="1" alpha="1">
         <data_defined_properties>
           <Option type="Map">
-            <Option type="QString" value="" name="name"/>
+            <Option type="QString" name="name" value=""/>
             <Option name="properties"/>
-            <Option type="QString" value="collection" name="type"/>
+            <Option type="QString" name="type" value="collection"/>
           </Option>
         </data_defined_properties>
-        <layer enabled="1" pass="0" class="SimpleMarker" locked="0">
+        <layer enabled="1" class="SimpleMarker" locked="0" pass="0">
           <Option type="Map">
-            <Option type="QString" value="0" name="angle"/>
-            <Option type="QString" value="square" name="cap_style"/>
-            <Option type="QString" value="227,26,28,255" name="color"/>
-            <Option type="QString" value="1" name="horizontal_anchor_point"/>
-            <Option type="QString" value="bevel" name="joinstyle"/>
-            <Option type="QString" value="triangle" name="name"/>
-            <Option type="QString" value="0,0" name="offset"/>
-            <Option type="QString" value="3x:0,0,0,0,0,0" name="offset_map_unit_scale"/>
-            <Option type="QString" value="MM" name="offset_unit"/>
-            <Option type="QString" value="35,35,35,255" name="outline_color"/>
-            <Option type="QString" value="solid" name="outline_style"/>
-            <Option type="QString" value="0.3" name="outline_width"/>
-            <Option type="QString" value="3x:0,0,0,0,0,0" name="outline_width_map_unit_scale"/>
-            <Option type="QString" value="MM" name="outline_width_unit"/>
-            <Option type="QString" value="diameter" name="scale_method"/>
-            <Option type="QString" value="5" name="size"/>
-            <Option type="QString" value="3x:0,0,0,0,0,0" name="size_map_unit_scale"/>
-            <Option type="QString" value="MM" name="size_unit"/>
-            <Option type="QString" value="1" name="vertical_anchor_point"/>
+            <Option type="QString" name="angle" value="0"/>
+            <Option type="QString" name="cap_style" value="square"/>
+            <Option type="QString" name="color" value="227,26,28,255"/>
+            <Option type="QString" name="horizontal_anchor_point" value="1"/>
+            <Option type="QString" name="joinstyle" value="bevel"/>
+            <Option type="QString" name="name" value="triangle"/>
+            <Option type="QString" name="offset" value="0,0"/>
+            <Option type="QString" name="offset_map_unit_scale" value="3x:0,0,0,0,0,0"/>
+            <Option type="QString" name="offset_unit" value="MM"/>
+            <Option type="QString" name="outline_color" value="35,35,35,255"/>
+            <Option type="QString" name="outline_style" value="solid"/>
+            <Option type="QString" name="outline_width" value="0.3"/>
+            <Option type="QString" name="outline_width_map_unit_scale" value="3x:0,0,0,0,0,0"/>
+            <Option type="QString" name="outline_width_unit" value="MM"/>
+            <Option type="QString" name="scale_method" value="diameter"/>
+            <Option type="QString" name="size" value="5"/>
+            <Option type="QString" name="size_map_unit_scale" value="3x:0,0,0,0,0,0"/>
+            <Option type="QString" name="size_unit" value="MM"/>
+            <Option type="QString" name="vertical_anchor_point" value="1"/>
           </Option>
           <prop v="0" k="angle"/>
           <prop v="square" k="cap_style"/>
@@ -59,42 +59,42 @@
           <prop v="1" k="vertical_anchor_point"/>
           <data_defined_properties>
             <Option type="Map">
-              <Option type="QString" value="" name="name"/>
+              <Option type="QString" name="name" value=""/>
               <Option name="properties"/>
-              <Option type="QString" value="collection" name="type"/>
+              <Option type="QString" name="type" value="collection"/>
             </Option>
           </data_defined_properties>
         </layer>
       </symbol>
-      <symbol type="marker" alpha="1" clip_to_extent="1" force_rhr="0" name="1">
+      <symbol force_rhr="0" type="marker" name="1" clip_to_extent="1" alpha="1">
         <data_defined_properties>
           <Option type="Map">
-            <Option type="QString" value="" name="name"/>
+            <Option type="QString" name="name" value=""/>
             <Option name="properties"/>
-            <Option type="QString" value="collection" name="type"/>
+            <Option type="QString" name="type" value="collection"/>
           </Option>
         </data_defined_properties>
-        <layer enabled="1" pass="0" class="SimpleMarker" locked="0">
+        <layer enabled="1" class="SimpleMarker" locked="0" pass="0">
           <Option type="Map">
-            <Option type="QString" value="0" name="angle"/>
-            <Option type="QString" value="square" name="cap_style"/>
-            <Option type="QString" value="227,26,28,255" name="color"/>
-            <Option type="QString" value="1" name="horizontal_anchor_point"/>
-            <Option type="QString" value="bevel" name="joinstyle"/>
-            <Option type="QString" value="triangle" name="name"/>
-            <Option type="QString" value="0,0" name="offset"/>
-            <Option type="QString" value="3x:0,0,0,0,0,0" name="offset_map_unit_scale"/>
-            <Option type="QString" value="MM" name="offset_unit"/>
-            <Option type="QString" value="35,35,35,255" name="outline_color"/>
-            <Option type="QString" value="solid" name="outline_style"/>
-            <Option type="QString" value="0.3" name="outline_width"/>
-            <Option type="QString" value="3x:0,0,0,0,0,0" name="outline_width_map_unit_scale"/>
-            <Option type="QString" value="MM" name="outline_width_unit"/>
-            <Option type="QString" value="diameter" name="scale_method"/>
-            <Option type="QString" value="4" name="size"/>
-            <Option type="QString" value="3x:0,0,0,0,0,0" name="size_map_unit_scale"/>
-            <Option type="QString" value="MM" name="size_unit"/>
-            <Option type="QString" value="1" name="vertical_anchor_point"/>
+            <Option type="QString" name="angle" value="0"/>
+            <Option type="QString" name="cap_style" value="square"/>
+            <Option type="QString" name="color" value="227,26,28,255"/>
+            <Option type="QString" name="horizontal_anchor_point" value="1"/>
+            <Option type="QString" name="joinstyle" value="bevel"/>
+            <Option type="QString" name="name" value="triangle"/>
+            <Option type="QString" name="offset" value="0,0"/>
+            <Option type="QString" name="offset_map_unit_scale" value="3x:0,0,0,0,0,0"/>
+            <Option type="QString" name="offset_unit" value="MM"/>
+            <Option type="QString" name="outline_color" value="35,35,35,255"/>
+            <Option type="QString" name="outline_style" value="solid"/>
+            <Option type="QString" name="outline_width" value="0.3"/>
+            <Option type="QString" name="outline_width_map_unit_scale" value="3x:0,0,0,0,0,0"/>
+            <Option type="QString" name="outline_width_unit" value="MM"/>
+            <Option type="QString" name="scale_method" value="diameter"/>
+            <Option type="QString" name="size" value="4"/>
+            <Option type="QString" name="size_map_unit_scale" value="3x:0,0,0,0,0,0"/>
+            <Option type="QString" name="size_unit" value="MM"/>
+            <Option type="QString" name="vertical_anchor_point" value="1"/>
           </Option>
           <prop v="0" k="angle"/>
           <prop v="square" k="cap_style"/>
@@ -117,42 +117,42 @@
           <prop v="1" k="vertical_anchor_point"/>
           <data_defined_properties>
             <Option type="Map">
-              <Option type="QString" value="" name="name"/>
+              <Option type="QString" name="name" value=""/>
               <Option name="properties"/>
-              <Option type="QString" value="collection" name="type"/>
+              <Option type="QString" name="type" value="collection"/>
             </Option>
           </data_defined_properties>
         </layer>
       </symbol>
-      <symbol type="marker" alpha="0.6" clip_to_extent="1" force_rhr="0" name="2">
+      <symbol force_rhr="0" type="marker" name="2" clip_to_extent="1" alpha="0.6">
         <data_defined_properties>
           <Option type="Map">
-            <Option type="QString" value="" name="name"/>
+            <Option type="QString" name="name" value=""/>
             <Option name="properties"/>
-            <Option type="QString" value="collection" name="type"/>
+            <Option type="QString" name="type" value="collection"/>
           </Option>
         </data_defined_properties>
-        <layer enabled="1" pass="0" class="SimpleMarker" locked="0">
+        <layer enabled="1" class="SimpleMarker" locked="0" pass="0">
           <Option type="Map">
-            <Option type="QString" value="0" name="angle"/>
-            <Option type="QString" value="square" name="cap_style"/>
-            <Option type="QString" value="255,127,0,255" name="color"/>
-            <Option type="QString" value="1" name="horizontal_anchor_point"/>
-            <Option type="QString" value="bevel" name="joinstyle"/>
-            <Option type="QString" value="circle" name="name"/>
-            <Option type="QString" value="0,0" name="offset"/>
-            <Option type="QString" value="3x:0,0,0,0,0,0" name="offset_map_unit_scale"/>
-            <Option type="QString" value="MM" name="offset_unit"/>
-            <Option type="QString" value="90,90,90,255" name="outline_color"/>
-            <Option type="QString" value="solid" name="outline_style"/>
-            <Option type="QString" value="0.3" name="outline_width"/>
-            <Option type="QString" value="3x:0,0,0,0,0,0" name="outline_width_map_unit_scale"/>
-            <Option type="QString" value="MM" name="outline_width_unit"/>
-            <Option type="QString" value="diameter" name="scale_method"/>
-            <Option type="QString" value="2.4" name="size"/>
-            <Option type="QString" value="3x:0,0,0,0,0,0" name="size_map_unit_scale"/>
-            <Option type="QString" value="MM" name="size_unit"/>
-            <Option type="QString" value="1" name="vertical_anchor_point"/>
+            <Option type="QString" name="angle" value="0"/>
+            <Option type="QString" name="cap_style" value="square"/>
+            <Option type="QString" name="color" value="255,127,0,255"/>
+            <Option type="QString" name="horizontal_anchor_point" value="1"/>
+            <Option type="QString" name="joinstyle" value="bevel"/>
+            <Option type="QString" name="name" value="circle"/>
+            <Option type="QString" name="offset" value="0,0"/>
+            <Option type="QString" name="offset_map_unit_scale" value="3x:0,0,0,0,0,0"/>
+            <Option type="QString" name="offset_unit" value="MM"/>
+            <Option type="QString" name="outline_color" value="90,90,90,255"/>
+            <Option type="QString" name="outline_style" value="solid"/>
+            <Option type="QString" name="outline_width" value="0.3"/>
+            <Option type="QString" name="outline_width_map_unit_scale" value="3x:0,0,0,0,0,0"/>
+            <Option type="QString" name="outline_width_unit" value="MM"/>
+            <Option type="QString" name="scale_method" value="diameter"/>
+            <Option type="QString" name="size" value="2.4"/>
+            <Option type="QString" name="size_map_unit_scale" value="3x:0,0,0,0,0,0"/>
+            <Option type="QString" name="size_unit" value="MM"/>
+            <Option type="QString" name="vertical_anchor_point" value="1"/>
           </Option>
           <prop v="0" k="angle"/>
           <prop v="square" k="cap_style"/>
@@ -175,42 +175,42 @@
           <prop v="1" k="vertical_anchor_point"/>
           <data_defined_properties>
             <Option type="Map">
-              <Option type="QString" value="" name="name"/>
+              <Option type="QString" name="name" value=""/>
               <Option name="properties"/>
-              <Option type="QString" value="collection" name="type"/>
+              <Option type="QString" name="type" value="collection"/>
             </Option>
           </data_defined_properties>
         </layer>
       </symbol>
-      <symbol type="marker" alpha="0.6" clip_to_extent="1" force_rhr="0" name="3">
+      <symbol force_rhr="0" type="marker" name="3" clip_to_extent="1" alpha="0.6">
         <data_defined_properties>
           <Option type="Map">
-            <Option type="QString" value="" name="name"/>
+            <Option type="QString" name="name" value=""/>
             <Option name="properties"/>
-            <Option type="QString" value="collection" name="type"/>
+            <Option type="QString" name="type" value="collection"/>
           </Option>
         </data_defined_properties>
-        <layer enabled="1" pass="0" class="SimpleMarker" locked="0">
+        <layer enabled="1" class="SimpleMarker" locked="0" pass="0">
           <Option type="Map">
-            <Option type="QString" value="0" name="angle"/>
-            <Option type="QString" value="square" name="cap_style"/>
-            <Option type="QString" value="150,150,150,255" name="color"/>
-            <Option type="QString" value="1" name="horizontal_anchor_point"/>
-            <Option type="QString" value="bevel" name="joinstyle"/>
-            <Option type="QString" value="circle" name="name"/>
-            <Option type="QString" value="0,0" name="offset"/>
-            <Option type="QString" value="3x:0,0,0,0,0,0" name="offset_map_unit_scale"/>
-            <Option type="QString" value="MM" name="offset_unit"/>
-            <Option type="QString" value="90,90,90,255" name="outline_color"/>
-            <Option type="QString" value="solid" name="outline_style"/>
-            <Option type="QString" value="0.3" name="outline_width"/>
-            <Option type="QString" value="3x:0,0,0,0,0,0" name="outline_width_map_unit_scale"/>
-            <Option type="QString" value="MM" name="outline_width_unit"/>
-            <Option type="QString" value="diameter" name="scale_method"/>
-            <Option type="QString" value="2" name="size"/>
-            <Option type="QString" value="3x:0,0,0,0,0,0" name="size_map_unit_scale"/>
-            <Option type="QString" value="MM" name="size_unit"/>
-            <Option type="QString" value="1" name="vertical_anchor_point"/>
+            <Option type="QString" name="angle" value="0"/>
+            <Option type="QString" name="cap_style" value="square"/>
+            <Option type="QString" name="color" value="150,150,150,255"/>
+            <Option type="QString" name="horizontal_anchor_point" value="1"/>
+            <Option type="QString" name="joinstyle" value="bevel"/>
+            <Option type="QString" name="name" value="circle"/>
+            <Option type="QString" name="offset" value="0,0"/>
+            <Option type="QString" name="offset_map_unit_scale" value="3x:0,0,0,0,0,0"/>
+            <Option type="QString" name="offset_unit" value="MM"/>
+            <Option type="QString" name="outline_color" value="90,90,90,255"/>
+            <Option type="QString" name="outline_style" value="solid"/>
+            <Option type="QString" name="outline_width" value="0.3"/>
+            <Option type="QString" name="outline_width_map_unit_scale" value="3x:0,0,0,0,0,0"/>
+            <Option type="QString" name="outline_width_unit" value="MM"/>
+            <Option type="QString" name="scale_method" value="diameter"/>
+            <Option type="QString" name="size" value="2"/>
+            <Option type="QString" name="size_map_unit_scale" value="3x:0,0,0,0,0,0"/>
+            <Option type="QString" name="size_unit" value="MM"/>
+            <Option type="QString" name="vertical_anchor_point" value="1"/>
           </Option>
           <prop v="0" k="angle"/>
           <prop v="square" k="cap_style"/>
@@ -233,9 +233,9 @@
           <prop v="1" k="vertical_anchor_point"/>
           <data_defined_properties>
             <Option type="Map">
-              <Option type="QString" value="" name="name"/>
+              <Option type="QString" name="name" value=""/>
               <Option name="properties"/>
-              <Option type="QString" value="collection" name="type"/>
+              <Option type="QString" name="type" value="collection"/>
             </Option>
           </data_defined_properties>
         </layer>
@@ -246,35 +246,35 @@
     </orderby>
   </renderer-v2>
   <labeling type="rule-based">
-    <rules key="{508f0c39-a6ac-4204-bcc3-58521689d155}">
-      <rule description="Mine indications" key="{6f176da7-2487-48ee-84ce-4feb5c724209}" filter="&quot;class_cue&quot; IN ('at_mine', 'ap_mine')">
+    <rules key="{b20d6f79-206e-4407-8b39-b81ddd1856e7}">
+      <rule filter="&quot;class_cue&quot; IN ('at_mine', 'ap_mine')" description="Mine indications" key="{6f31a92a-ece0-4916-b231-c398a5270800}">
         <settings calloutType="simple">
-          <text-style fontKerning="1" isExpression="0" fontItalic="0" fontFamily="DejaVu Sans" namedStyle="" legendString="Aa" allowHtml="0" multilineHeight="1" textColor="120,0,0,255" previewBkgrdColor="255,255,255,255" fontWordSpacing="0" fontLetterSpacing="0" fontStrikeout="0" capitalization="0" fontSizeUnit="Point" blendMode="0" textOrientation="horizontal" useSubstitutions="0" textOpacity="1" fontUnderline="0" fieldName="short_id" fontSizeMapUnitScale="3x:0,0,0,0,0,0" fontWeight="75" fontSize="9">
+          <text-style blendMode="0" fontLetterSpacing="0" fontSize="9" fieldName="short_id" fontWeight="75" textOrientation="horizontal" isExpression="0" previewBkgrdColor="255,255,255,255" fontSizeMapUnitScale="3x:0,0,0,0,0,0" textOpacity="1" fontWordSpacing="0" fontFamily="DejaVu Sans" textColor="120,0,0,255" multilineHeight="1" legendString="Aa" fontUnderline="0" fontKerning="1" allowHtml="0" useSubstitutions="0" namedStyle="" fontItalic="0" fontStrikeout="0" capitalization="0" fontSizeUnit="Point">
             <families/>
-            <text-buffer bufferOpacity="1" bufferSizeMapUnitScale="3x:0,0,0,0,0,0" bufferColor="255,255,255,255" bufferSizeUnits="MM" bufferNoFill="1" bufferDraw="1" bufferJoinStyle="128" bufferBlendMode="0" bufferSize="0.80000000000000004"/>
-            <text-mask maskSize="1.5" maskEnabled="0" maskOpacity="1" maskType="0" maskSizeUnits="MM" maskedSymbolLayers="" maskSizeMapUnitScale="3x:0,0,0,0,0,0" maskJoinStyle="128"/>
-            <background shapeOpacity="1" shapeOffsetY="0" shapeType="0" shapeOffsetX="0" shapeBlendMode="0" shapeRadiiX="0" shapeBorderWidth="0" shapeBorderColor="128,128,128,255" shapeSizeX="0" shapeRadiiUnit="MM" shapeSizeMapUnitScale="3x:0,0,0,0,0,0" shapeSizeY="0" shapeSizeUnit="MM" shapeBorderWidthUnit="MM" shapeRotation="0" shapeSVGFile="" shapeJoinStyle="64" shapeRadiiY="0" shapeSizeType="0" shapeDraw="0" shapeOffsetMapUnitScale="3x:0,0,0,0,0,0" shapeRotationType="0" shapeOffsetUnit="MM" shapeRadiiMapUnitScale="3x:0,0,0,0,0,0" shapeFillColor="255,255,255,255" shapeBorderWidthMapUnitScale="3x:0,0,0,0,0,0">
-              <symbol type="fill" alpha="1" clip_to_extent="1" force_rhr="0" name="fillSymbol">
+            <text-buffer bufferBlendMode="0" bufferSizeMapUnitScale="3x:0,0,0,0,0,0" bufferNoFill="1" bufferSize="0.80000000000000004" bufferColor="255,255,255,255" bufferDraw="1" bufferJoinStyle="128" bufferSizeUnits="MM" bufferOpacity="1"/>
+            <text-mask maskJoinStyle="128" maskType="0" maskedSymbolLayers="" maskSizeUnits="MM" maskSize="1.5" maskEnabled="0" maskOpacity="1" maskSizeMapUnitScale="3x:0,0,0,0,0,0"/>
+            <background shapeJoinStyle="64" shapeRadiiX="0" shapeSizeMapUnitScale="3x:0,0,0,0,0,0" shapeDraw="0" shapeSizeUnit="MM" shapeSVGFile="" shapeOpacity="1" shapeBlendMode="0" shapeRotation="0" shapeOffsetX="0" shapeType="0" shapeFillColor="255,255,255,255" shapeRadiiY="0" shapeSizeX="0" shapeBorderWidthMapUnitScale="3x:0,0,0,0,0,0" shapeOffsetY="0" shapeOffsetUnit="MM" shapeBorderColor="128,128,128,255" shapeRadiiUnit="MM" shapeSizeType="0" shapeRotationType="0" shapeOffsetMapUnitScale="3x:0,0,0,0,0,0" shapeBorderWidthUnit="MM" shapeBorderWidth="0" shapeSizeY="0" shapeRadiiMapUnitScale="3x:0,0,0,0,0,0">
+              <symbol force_rhr="0" type="fill" name="fillSymbol" clip_to_extent="1" alpha="1">
                 <data_defined_properties>
                   <Option type="Map">
-                    <Option type="QString" value="" name="name"/>
+                    <Option type="QString" name="name" value=""/>
                     <Option name="properties"/>
-                    <Option type="QString" value="collection" name="type"/>
+                    <Option type="QString" name="type" value="collection"/>
                   </Option>
                 </data_defined_properties>
-                <layer enabled="1" pass="0" class="SimpleFill" locked="0">
+                <layer enabled="1" class="SimpleFill" locked="0" pass="0">
                   <Option type="Map">
-                    <Option type="QString" value="3x:0,0,0,0,0,0" name="border_width_map_unit_scale"/>
-                    <Option type="QString" value="255,255,255,255" name="color"/>
-                    <Option type="QString" value="bevel" name="joinstyle"/>
-                    <Option type="QString" value="0,0" name="offset"/>
-                    <Option type="QString" value="3x:0,0,0,0,0,0" name="offset_map_unit_scale"/>
-                    <Option type="QString" value="MM" name="offset_unit"/>
-                    <Option type="QString" value="128,128,128,255" name="outline_color"/>
-                    <Option type="QString" value="no" name="outline_style"/>
-                    <Option type="QString" value="0" name="outline_width"/>
-                    <Option type="QString" value="MM" name="outline_width_unit"/>
-                    <Option type="QString" value="solid" name="style"/>
+                    <Option type="QString" name="border_width_map_unit_scale" value="3x:0,0,0,0,0,0"/>
+                    <Option type="QString" name="color" value="255,255,255,255"/>
+                    <Option type="QString" name="joinstyle" value="bevel"/>
+                    <Option type="QString" name="offset" value="0,0"/>
+                    <Option type="QString" name="offset_map_unit_scale" value="3x:0,0,0,0,0,0"/>
+                    <Option type="QString" name="offset_unit" value="MM"/>
+                    <Option type="QString" name="outline_color" value="128,128,128,255"/>
+                    <Option type="QString" name="outline_style" value="no"/>
+                    <Option type="QString" name="outline_width" value="0"/>
+                    <Option type="QString" name="outline_width_unit" value="MM"/>
+                    <Option type="QString" name="style" value="solid"/>
                   </Option>
                   <prop v="3x:0,0,0,0,0,0" k="border_width_map_unit_scale"/>
                   <prop v="255,255,255,255" k="color"/>
@@ -289,56 +289,56 @@
                   <prop v="solid" k="style"/>
                   <data_defined_properties>
                     <Option type="Map">
-                      <Option type="QString" value="" name="name"/>
+                      <Option type="QString" name="name" value=""/>
                       <Option name="properties"/>
-                      <Option type="QString" value="collection" name="type"/>
+                      <Option type="QString" name="type" value="collection"/>
                     </Option>
                   </data_defined_properties>
                 </layer>
               </symbol>
             </background>
-            <shadow shadowOffsetAngle="135" shadowRadiusMapUnitScale="3x:0,0,0,0,0,0" shadowColor="0,0,0,255" shadowBlendMode="6" shadowOffsetDist="1" shadowOffsetUnit="MM" shadowOffsetGlobal="1" shadowRadiusUnit="MM" shadowScale="100" shadowRadius="1.5" shadowUnder="0" shadowDraw="0" shadowOffsetMapUnitScale="3x:0,0,0,0,0,0" shadowRadiusAlphaOnly="0" shadowOpacity="0.69999999999999996"/>
+            <shadow shadowOffsetDist="1" shadowColor="0,0,0,255" shadowOffsetMapUnitScale="3x:0,0,0,0,0,0" shadowOpacity="0.69999999999999996" shadowRadiusUnit="MM" shadowRadiusMapUnitScale="3x:0,0,0,0,0,0" shadowDraw="0" shadowScale="100" shadowOffsetUnit="MM" shadowBlendMode="6" shadowRadiusAlphaOnly="0" shadowUnder="0" shadowOffsetAngle="135" shadowOffsetGlobal="1" shadowRadius="1.5"/>
             <dd_properties>
               <Option type="Map">
-                <Option type="QString" value="" name="name"/>
+                <Option type="QString" name="name" value=""/>
                 <Option name="properties"/>
-                <Option type="QString" value="collection" name="type"/>
+                <Option type="QString" name="type" value="collection"/>
               </Option>
             </dd_properties>
             <substitutions/>
           </text-style>
-          <text-format wrapChar="" placeDirectionSymbol="0" reverseDirectionSymbol="0" autoWrapLength="0" multilineAlign="3" formatNumbers="0" useMaxLineLengthForAutoWrap="1" rightDirectionSymbol=">" leftDirectionSymbol="&lt;" decimals="3" addDirectionSymbol="0" plussign="0"/>
-          <placement quadOffset="4" maxCurvedCharAngleOut="-25" priority="9" overrunDistanceMapUnitScale="3x:0,0,0,0,0,0" centroidInside="0" maxCurvedCharAngleIn="25" distMapUnitScale="3x:0,0,0,0,0,0" labelOffsetMapUnitScale="3x:0,0,0,0,0,0" geometryGenerator="" centroidWhole="0" preserveRotation="1" geometryGeneratorType="PointGeometry" yOffset="0" lineAnchorPercent="0.5" rotationAngle="0" fitInPolygonOnly="0" offsetType="0" rotationUnit="AngleDegrees" repeatDistance="0" polygonPlacementFlags="2" offsetUnits="MM" distUnits="MM" placement="6" geometryGeneratorEnabled="0" lineAnchorType="0" overrunDistance="0" xOffset="0" predefinedPositionOrder="TR,TL,BR,BL,R,L,TSR,BSR" layerType="UnknownGeometry" lineAnchorClipping="0" placementFlags="10" repeatDistanceUnits="MM" repeatDistanceMapUnitScale="3x:0,0,0,0,0,0" dist="1" overrunDistanceUnit="MM"/>
-          <rendering scaleVisibility="0" drawLabels="1" limitNumLabels="0" fontMinPixelSize="0" fontMaxPixelSize="10000" scaleMax="0" labelPerPart="0" upsidedownLabels="0" scaleMin="0" obstacleType="1" minFeatureSize="0" obstacle="1" mergeLines="0" zIndex="0" displayAll="0" fontLimitPixelSize="0" maxNumLabels="2000" obstacleFactor="1" unplacedVisibility="0"/>
+          <text-format useMaxLineLengthForAutoWrap="1" wrapChar="" autoWrapLength="0" placeDirectionSymbol="0" rightDirectionSymbol=">" reverseDirectionSymbol="0" addDirectionSymbol="0" multilineAlign="3" leftDirectionSymbol="&lt;" decimals="3" plussign="0" formatNumbers="0"/>
+          <placement distUnits="MM" geometryGeneratorType="PointGeometry" overrunDistanceMapUnitScale="3x:0,0,0,0,0,0" lineAnchorType="0" lineAnchorClipping="0" quadOffset="4" repeatDistance="0" distMapUnitScale="3x:0,0,0,0,0,0" geometryGeneratorEnabled="0" labelOffsetMapUnitScale="3x:0,0,0,0,0,0" maxCurvedCharAngleIn="25" placement="6" rotationUnit="AngleDegrees" repeatDistanceMapUnitScale="3x:0,0,0,0,0,0" placementFlags="10" lineAnchorPercent="0.5" rotationAngle="0" fitInPolygonOnly="0" dist="1" xOffset="0" centroidWhole="0" preserveRotation="1" yOffset="0" overrunDistance="0" overrunDistanceUnit="MM" layerType="UnknownGeometry" offsetUnits="MM" polygonPlacementFlags="2" maxCurvedCharAngleOut="-25" priority="9" centroidInside="0" geometryGenerator="" offsetType="0" predefinedPositionOrder="TR,TL,BR,BL,R,L,TSR,BSR" repeatDistanceUnits="MM"/>
+          <rendering scaleMin="0" displayAll="0" limitNumLabels="0" minFeatureSize="0" scaleMax="0" labelPerPart="0" obstacleFactor="1" drawLabels="1" upsidedownLabels="0" fontMaxPixelSize="10000" mergeLines="0" scaleVisibility="0" maxNumLabels="2000" fontMinPixelSize="0" fontLimitPixelSize="0" unplacedVisibility="0" zIndex="0" obstacle="1" obstacleType="1"/>
           <dd_properties>
             <Option type="Map">
-              <Option type="QString" value="" name="name"/>
+              <Option type="QString" name="name" value=""/>
               <Option name="properties"/>
-              <Option type="QString" value="collection" name="type"/>
+              <Option type="QString" name="type" value="collection"/>
             </Option>
           </dd_properties>
           <callout type="simple">
             <Option type="Map">
-              <Option type="QString" value="pole_of_inaccessibility" name="anchorPoint"/>
-              <Option type="int" value="0" name="blendMode"/>
+              <Option type="QString" name="anchorPoint" value="pole_of_inaccessibility"/>
+              <Option type="int" name="blendMode" value="0"/>
               <Option type="Map" name="ddProperties">
-                <Option type="QString" value="" name="name"/>
+                <Option type="QString" name="name" value=""/>
                 <Option name="properties"/>
-                <Option type="QString" value="collection" name="type"/>
+                <Option type="QString" name="type" value="collection"/>
               </Option>
-              <Option type="bool" value="false" name="drawToAllParts"/>
-              <Option type="QString" value="0" name="enabled"/>
-              <Option type="QString" value="point_on_exterior" name="labelAnchorPoint"/>
-              <Option type="QString" value="&lt;symbol type=&quot;line&quot; alpha=&quot;1&quot; clip_to_extent=&quot;1&quot; force_rhr=&quot;0&quot; name=&quot;symbol&quot;>&lt;data_defined_properties>&lt;Option type=&quot;Map&quot;>&lt;Option type=&quot;QString&quot; value=&quot;&quot; name=&quot;name&quot;/>&lt;Option name=&quot;properties&quot;/>&lt;Option type=&quot;QString&quot; value=&quot;collection&quot; name=&quot;type&quot;/>&lt;/Option>&lt;/data_defined_properties>&lt;layer enabled=&quot;1&quot; pass=&quot;0&quot; class=&quot;SimpleLine&quot; locked=&quot;0&quot;>&lt;Option type=&quot;Map&quot;>&lt;Option type=&quot;QString&quot; value=&quot;0&quot; name=&quot;align_dash_pattern&quot;/>&lt;Option type=&quot;QString&quot; value=&quot;square&quot; name=&quot;capstyle&quot;/>&lt;Option type=&quot;QString&quot; value=&quot;5;2&quot; name=&quot;customdash&quot;/>&lt;Option type=&quot;QString&quot; value=&quot;3x:0,0,0,0,0,0&quot; name=&quot;customdash_map_unit_scale&quot;/>&lt;Option type=&quot;QString&quot; value=&quot;MM&quot; name=&quot;customdash_unit&quot;/>&lt;Option type=&quot;QString&quot; value=&quot;0&quot; name=&quot;dash_pattern_offset&quot;/>&lt;Option type=&quot;QString&quot; value=&quot;3x:0,0,0,0,0,0&quot; name=&quot;dash_pattern_offset_map_unit_scale&quot;/>&lt;Option type=&quot;QString&quot; value=&quot;MM&quot; name=&quot;dash_pattern_offset_unit&quot;/>&lt;Option type=&quot;QString&quot; value=&quot;0&quot; name=&quot;draw_inside_polygon&quot;/>&lt;Option type=&quot;QString&quot; value=&quot;bevel&quot; name=&quot;joinstyle&quot;/>&lt;Option type=&quot;QString&quot; value=&quot;60,60,60,255&quot; name=&quot;line_color&quot;/>&lt;Option type=&quot;QString&quot; value=&quot;solid&quot; name=&quot;line_style&quot;/>&lt;Option type=&quot;QString&quot; value=&quot;0.3&quot; name=&quot;line_width&quot;/>&lt;Option type=&quot;QString&quot; value=&quot;MM&quot; name=&quot;line_width_unit&quot;/>&lt;Option type=&quot;QString&quot; value=&quot;0&quot; name=&quot;offset&quot;/>&lt;Option type=&quot;QString&quot; value=&quot;3x:0,0,0,0,0,0&quot; name=&quot;offset_map_unit_scale&quot;/>&lt;Option type=&quot;QString&quot; value=&quot;MM&quot; name=&quot;offset_unit&quot;/>&lt;Option type=&quot;QString&quot; value=&quot;0&quot; name=&quot;ring_filter&quot;/>&lt;Option type=&quot;QString&quot; value=&quot;0&quot; name=&quot;trim_distance_end&quot;/>&lt;Option type=&quot;QString&quot; value=&quot;3x:0,0,0,0,0,0&quot; name=&quot;trim_distance_end_map_unit_scale&quot;/>&lt;Option type=&quot;QString&quot; value=&quot;MM&quot; name=&quot;trim_distance_end_unit&quot;/>&lt;Option type=&quot;QString&quot; value=&quot;0&quot; name=&quot;trim_distance_start&quot;/>&lt;Option type=&quot;QString&quot; value=&quot;3x:0,0,0,0,0,0&quot; name=&quot;trim_distance_start_map_unit_scale&quot;/>&lt;Option type=&quot;QString&quot; value=&quot;MM&quot; name=&quot;trim_distance_start_unit&quot;/>&lt;Option type=&quot;QString&quot; value=&quot;0&quot; name=&quot;tweak_dash_pattern_on_corners&quot;/>&lt;Option type=&quot;QString&quot; value=&quot;0&quot; name=&quot;use_custom_dash&quot;/>&lt;Option type=&quot;QString&quot; value=&quot;3x:0,0,0,0,0,0&quot; name=&quot;width_map_unit_scale&quot;/>&lt;/Option>&lt;prop v=&quot;0&quot; k=&quot;align_dash_pattern&quot;/>&lt;prop v=&quot;square&quot; k=&quot;capstyle&quot;/>&lt;prop v=&quot;5;2&quot; k=&quot;customdash&quot;/>&lt;prop v=&quot;3x:0,0,0,0,0,0&quot; k=&quot;customdash_map_unit_scale&quot;/>&lt;prop v=&quot;MM&quot; k=&quot;customdash_unit&quot;/>&lt;prop v=&quot;0&quot; k=&quot;dash_pattern_offset&quot;/>&lt;prop v=&quot;3x:0,0,0,0,0,0&quot; k=&quot;dash_pattern_offset_map_unit_scale&quot;/>&lt;prop v=&quot;MM&quot; k=&quot;dash_pattern_offset_unit&quot;/>&lt;prop v=&quot;0&quot; k=&quot;draw_inside_polygon&quot;/>&lt;prop v=&quot;bevel&quot; k=&quot;joinstyle&quot;/>&lt;prop v=&quot;60,60,60,255&quot; k=&quot;line_color&quot;/>&lt;prop v=&quot;solid&quot; k=&quot;line_style&quot;/>&lt;prop v=&quot;0.3&quot; k=&quot;line_width&quot;/>&lt;prop v=&quot;MM&quot; k=&quot;line_width_unit&quot;/>&lt;prop v=&quot;0&quot; k=&quot;offset&quot;/>&lt;prop v=&quot;3x:0,0,0,0,0,0&quot; k=&quot;offset_map_unit_scale&quot;/>&lt;prop v=&quot;MM&quot; k=&quot;offset_unit&quot;/>&lt;prop v=&quot;0&quot; k=&quot;ring_filter&quot;/>&lt;prop v=&quot;0&quot; k=&quot;trim_distance_end&quot;/>&lt;prop v=&quot;3x:0,0,0,0,0,0&quot; k=&quot;trim_distance_end_map_unit_scale&quot;/>&lt;prop v=&quot;MM&quot; k=&quot;trim_distance_end_unit&quot;/>&lt;prop v=&quot;0&quot; k=&quot;trim_distance_start&quot;/>&lt;prop v=&quot;3x:0,0,0,0,0,0&quot; k=&quot;trim_distance_start_map_unit_scale&quot;/>&lt;prop v=&quot;MM&quot; k=&quot;trim_distance_start_unit&quot;/>&lt;prop v=&quot;0&quot; k=&quot;tweak_dash_pattern_on_corners&quot;/>&lt;prop v=&quot;0&quot; k=&quot;use_custom_dash&quot;/>&lt;prop v=&quot;3x:0,0,0,0,0,0&quot; k=&quot;width_map_unit_scale&quot;/>&lt;data_defined_properties>&lt;Option type=&quot;Map&quot;>&lt;Option type=&quot;QString&quot; value=&quot;&quot; name=&quot;name&quot;/>&lt;Option name=&quot;properties&quot;/>&lt;Option type=&quot;QString&quot; value=&quot;collection&quot; name=&quot;type&quot;/>&lt;/Option>&lt;/data_defined_properties>&lt;/layer>&lt;/symbol>" name="lineSymbol"/>
-              <Option type="double" value="0" name="minLength"/>
-              <Option type="QString" value="3x:0,0,0,0,0,0" name="minLengthMapUnitScale"/>
-              <Option type="QString" value="MM" name="minLengthUnit"/>
-              <Option type="double" value="0" name="offsetFromAnchor"/>
-              <Option type="QString" value="3x:0,0,0,0,0,0" name="offsetFromAnchorMapUnitScale"/>
-              <Option type="QString" value="MM" name="offsetFromAnchorUnit"/>
-              <Option type="double" value="0" name="offsetFromLabel"/>
-              <Option type="QString" value="3x:0,0,0,0,0,0" name="offsetFromLabelMapUnitScale"/>
-              <Option type="QString" value="MM" name="offsetFromLabelUnit"/>
+              <Option type="bool" name="drawToAllParts" value="false"/>
+              <Option type="QString" name="enabled" value="0"/>
+              <Option type="QString" name="labelAnchorPoint" value="point_on_exterior"/>
+              <Option type="QString" name="lineSymbol" value="&lt;symbol force_rhr=&quot;0&quot; type=&quot;line&quot; name=&quot;symbol&quot; clip_to_extent=&quot;1&quot; alpha=&quot;1&quot;>&lt;data_defined_properties>&lt;Option type=&quot;Map&quot;>&lt;Option type=&quot;QString&quot; name=&quot;name&quot; value=&quot;&quot;/>&lt;Option name=&quot;properties&quot;/>&lt;Option type=&quot;QString&quot; name=&quot;type&quot; value=&quot;collection&quot;/>&lt;/Option>&lt;/data_defined_properties>&lt;layer enabled=&quot;1&quot; class=&quot;SimpleLine&quot; locked=&quot;0&quot; pass=&quot;0&quot;>&lt;Option type=&quot;Map&quot;>&lt;Option type=&quot;QString&quot; name=&quot;align_dash_pattern&quot; value=&quot;0&quot;/>&lt;Option type=&quot;QString&quot; name=&quot;capstyle&quot; value=&quot;square&quot;/>&lt;Option type=&quot;QString&quot; name=&quot;customdash&quot; value=&quot;5;2&quot;/>&lt;Option type=&quot;QString&quot; name=&quot;customdash_map_unit_scale&quot; value=&quot;3x:0,0,0,0,0,0&quot;/>&lt;Option type=&quot;QString&quot; name=&quot;customdash_unit&quot; value=&quot;MM&quot;/>&lt;Option type=&quot;QString&quot; name=&quot;dash_pattern_offset&quot; value=&quot;0&quot;/>&lt;Option type=&quot;QString&quot; name=&quot;dash_pattern_offset_map_unit_scale&quot; value=&quot;3x:0,0,0,0,0,0&quot;/>&lt;Option type=&quot;QString&quot; name=&quot;dash_pattern_offset_unit&quot; value=&quot;MM&quot;/>&lt;Option type=&quot;QString&quot; name=&quot;draw_inside_polygon&quot; value=&quot;0&quot;/>&lt;Option type=&quot;QString&quot; name=&quot;joinstyle&quot; value=&quot;bevel&quot;/>&lt;Option type=&quot;QString&quot; name=&quot;line_color&quot; value=&quot;60,60,60,255&quot;/>&lt;Option type=&quot;QString&quot; name=&quot;line_style&quot; value=&quot;solid&quot;/>&lt;Option type=&quot;QString&quot; name=&quot;line_width&quot; value=&quot;0.3&quot;/>&lt;Option type=&quot;QString&quot; name=&quot;line_width_unit&quot; value=&quot;MM&quot;/>&lt;Option type=&quot;QString&quot; name=&quot;offset&quot; value=&quot;0&quot;/>&lt;Option type=&quot;QString&quot; name=&quot;offset_map_unit_scale&quot; value=&quot;3x:0,0,0,0,0,0&quot;/>&lt;Option type=&quot;QString&quot; name=&quot;offset_unit&quot; value=&quot;MM&quot;/>&lt;Option type=&quot;QString&quot; name=&quot;ring_filter&quot; value=&quot;0&quot;/>&lt;Option type=&quot;QString&quot; name=&quot;trim_distance_end&quot; value=&quot;0&quot;/>&lt;Option type=&quot;QString&quot; name=&quot;trim_distance_end_map_unit_scale&quot; value=&quot;3x:0,0,0,0,0,0&quot;/>&lt;Option type=&quot;QString&quot; name=&quot;trim_distance_end_unit&quot; value=&quot;MM&quot;/>&lt;Option type=&quot;QString&quot; name=&quot;trim_distance_start&quot; value=&quot;0&quot;/>&lt;Option type=&quot;QString&quot; name=&quot;trim_distance_start_map_unit_scale&quot; value=&quot;3x:0,0,0,0,0,0&quot;/>&lt;Option type=&quot;QString&quot; name=&quot;trim_distance_start_unit&quot; value=&quot;MM&quot;/>&lt;Option type=&quot;QString&quot; name=&quot;tweak_dash_pattern_on_corners&quot; value=&quot;0&quot;/>&lt;Option type=&quot;QString&quot; name=&quot;use_custom_dash&quot; value=&quot;0&quot;/>&lt;Option type=&quot;QString&quot; name=&quot;width_map_unit_scale&quot; value=&quot;3x:0,0,0,0,0,0&quot;/>&lt;/Option>&lt;prop v=&quot;0&quot; k=&quot;align_dash_pattern&quot;/>&lt;prop v=&quot;square&quot; k=&quot;capstyle&quot;/>&lt;prop v=&quot;5;2&quot; k=&quot;customdash&quot;/>&lt;prop v=&quot;3x:0,0,0,0,0,0&quot; k=&quot;customdash_map_unit_scale&quot;/>&lt;prop v=&quot;MM&quot; k=&quot;customdash_unit&quot;/>&lt;prop v=&quot;0&quot; k=&quot;dash_pattern_offset&quot;/>&lt;prop v=&quot;3x:0,0,0,0,0,0&quot; k=&quot;dash_pattern_offset_map_unit_scale&quot;/>&lt;prop v=&quot;MM&quot; k=&quot;dash_pattern_offset_unit&quot;/>&lt;prop v=&quot;0&quot; k=&quot;draw_inside_polygon&quot;/>&lt;prop v=&quot;bevel&quot; k=&quot;joinstyle&quot;/>&lt;prop v=&quot;60,60,60,255&quot; k=&quot;line_color&quot;/>&lt;prop v=&quot;solid&quot; k=&quot;line_style&quot;/>&lt;prop v=&quot;0.3&quot; k=&quot;line_width&quot;/>&lt;prop v=&quot;MM&quot; k=&quot;line_width_unit&quot;/>&lt;prop v=&quot;0&quot; k=&quot;offset&quot;/>&lt;prop v=&quot;3x:0,0,0,0,0,0&quot; k=&quot;offset_map_unit_scale&quot;/>&lt;prop v=&quot;MM&quot; k=&quot;offset_unit&quot;/>&lt;prop v=&quot;0&quot; k=&quot;ring_filter&quot;/>&lt;prop v=&quot;0&quot; k=&quot;trim_distance_end&quot;/>&lt;prop v=&quot;3x:0,0,0,0,0,0&quot; k=&quot;trim_distance_end_map_unit_scale&quot;/>&lt;prop v=&quot;MM&quot; k=&quot;trim_distance_end_unit&quot;/>&lt;prop v=&quot;0&quot; k=&quot;trim_distance_start&quot;/>&lt;prop v=&quot;3x:0,0,0,0,0,0&quot; k=&quot;trim_distance_start_map_unit_scale&quot;/>&lt;prop v=&quot;MM&quot; k=&quot;trim_distance_start_unit&quot;/>&lt;prop v=&quot;0&quot; k=&quot;tweak_dash_pattern_on_corners&quot;/>&lt;prop v=&quot;0&quot; k=&quot;use_custom_dash&quot;/>&lt;prop v=&quot;3x:0,0,0,0,0,0&quot; k=&quot;width_map_unit_scale&quot;/>&lt;data_defined_properties>&lt;Option type=&quot;Map&quot;>&lt;Option type=&quot;QString&quot; name=&quot;name&quot; value=&quot;&quot;/>&lt;Option name=&quot;properties&quot;/>&lt;Option type=&quot;QString&quot; name=&quot;type&quot; value=&quot;collection&quot;/>&lt;/Option>&lt;/data_defined_properties>&lt;/layer>&lt;/symbol>"/>
+              <Option type="double" name="minLength" value="0"/>
+              <Option type="QString" name="minLengthMapUnitScale" value="3x:0,0,0,0,0,0"/>
+              <Option type="QString" name="minLengthUnit" value="MM"/>
+              <Option type="double" name="offsetFromAnchor" value="0"/>
+              <Option type="QString" name="offsetFromAnchorMapUnitScale" value="3x:0,0,0,0,0,0"/>
+              <Option type="QString" name="offsetFromAnchorUnit" value="MM"/>
+              <Option type="double" name="offsetFromLabel" value="0"/>
+              <Option type="QString" name="offsetFromLabelMapUnitScale" value="3x:0,0,0,0,0,0"/>
+              <Option type="QString" name="offsetFromLabelUnit" value="MM"/>
             </Option>
           </callout>
         </settings>
@@ -349,327 +349,327 @@
   <featureBlendMode>0</featureBlendMode>
   <layerOpacity>1</layerOpacity>
   <fieldConfiguration>
-    <field configurationFlags="None" name="fid">
+    <field name="fid" configurationFlags="None">
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option type="bool" value="false" name="IsMultiline"/>
-            <Option type="bool" value="false" name="UseHtml"/>
+            <Option type="bool" name="IsMultiline" value="false"/>
+            <Option type="bool" name="UseHtml" value="false"/>
           </Option>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="anomaly_id">
+    <field name="anomaly_id" configurationFlags="None">
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option type="bool" value="false" name="IsMultiline"/>
-            <Option type="bool" value="false" name="UseHtml"/>
+            <Option type="bool" name="IsMultiline" value="false"/>
+            <Option type="bool" name="UseHtml" value="false"/>
           </Option>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="x">
+    <field name="x" configurationFlags="None">
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option type="bool" value="true" name="AllowNull"/>
-            <Option type="double" value="1e+09" name="Max"/>
-            <Option type="double" value="-1e+09" name="Min"/>
-            <Option type="int" value="2" name="Precision"/>
-            <Option type="int" value="1" name="Step"/>
-            <Option type="QString" value="SpinBox" name="Style"/>
+            <Option type="bool" name="AllowNull" value="true"/>
+            <Option type="double" name="Max" value="1e+09"/>
+            <Option type="double" name="Min" value="-1e+09"/>
+            <Option type="int" name="Precision" value="2"/>
+            <Option type="int" name="Step" value="1"/>
+            <Option type="QString" name="Style" value="SpinBox"/>
           </Option>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="y">
+    <field name="y" configurationFlags="None">
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option type="bool" value="true" name="AllowNull"/>
-            <Option type="double" value="1e+09" name="Max"/>
-            <Option type="double" value="-1e+09" name="Min"/>
-            <Option type="int" value="2" name="Precision"/>
-            <Option type="int" value="1" name="Step"/>
-            <Option type="QString" value="SpinBox" name="Style"/>
+            <Option type="bool" name="AllowNull" value="true"/>
+            <Option type="double" name="Max" value="1e+09"/>
+            <Option type="double" name="Min" value="-1e+09"/>
+            <Option type="int" name="Precision" value="2"/>
+            <Option type="int" name="Step" value="1"/>
+            <Option type="QString" name="Style" value="SpinBox"/>
           </Option>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="lat">
+    <field name="lat" configurationFlags="None">
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option type="bool" value="true" name="AllowNull"/>
-            <Option type="double" value="1e+09" name="Max"/>
-            <Option type="double" value="-1e+09" name="Min"/>
-            <Option type="int" value="7" name="Precision"/>
-            <Option type="int" value="1" name="Step"/>
-            <Option type="QString" value="SpinBox" name="Style"/>
+            <Option type="bool" name="AllowNull" value="true"/>
+            <Option type="double" name="Max" value="1e+09"/>
+            <Option type="double" name="Min" value="-1e+09"/>
+            <Option type="int" name="Precision" value="7"/>
+            <Option type="int" name="Step" value="1"/>
+            <Option type="QString" name="Style" value="SpinBox"/>
           </Option>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="lon">
+    <field name="lon" configurationFlags="None">
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option type="bool" value="true" name="AllowNull"/>
-            <Option type="double" value="1e+09" name="Max"/>
-            <Option type="double" value="-1e+09" name="Min"/>
-            <Option type="int" value="7" name="Precision"/>
-            <Option type="int" value="1" name="Step"/>
-            <Option type="QString" value="SpinBox" name="Style"/>
+            <Option type="bool" name="AllowNull" value="true"/>
+            <Option type="double" name="Max" value="1e+09"/>
+            <Option type="double" name="Min" value="-1e+09"/>
+            <Option type="int" name="Precision" value="7"/>
+            <Option type="int" name="Step" value="1"/>
+            <Option type="QString" name="Style" value="SpinBox"/>
           </Option>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="area_m2">
+    <field name="area_m2" configurationFlags="None">
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option type="bool" value="true" name="AllowNull"/>
-            <Option type="double" value="1e+09" name="Max"/>
-            <Option type="double" value="-1e+09" name="Min"/>
-            <Option type="int" value="3" name="Precision"/>
-            <Option type="int" value="1" name="Step"/>
-            <Option type="QString" value="SpinBox" name="Style"/>
+            <Option type="bool" name="AllowNull" value="true"/>
+            <Option type="double" name="Max" value="1e+09"/>
+            <Option type="double" name="Min" value="-1e+09"/>
+            <Option type="int" name="Precision" value="3"/>
+            <Option type="int" name="Step" value="1"/>
+            <Option type="QString" name="Style" value="SpinBox"/>
           </Option>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="diameter_m">
+    <field name="diameter_m" configurationFlags="None">
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option type="bool" value="true" name="AllowNull"/>
-            <Option type="double" value="1e+09" name="Max"/>
-            <Option type="double" value="-1e+09" name="Min"/>
-            <Option type="int" value="2" name="Precision"/>
-            <Option type="int" value="1" name="Step"/>
-            <Option type="QString" value="SpinBox" name="Style"/>
+            <Option type="bool" name="AllowNull" value="true"/>
+            <Option type="double" name="Max" value="1e+09"/>
+            <Option type="double" name="Min" value="-1e+09"/>
+            <Option type="int" name="Precision" value="2"/>
+            <Option type="int" name="Step" value="1"/>
+            <Option type="QString" name="Style" value="SpinBox"/>
           </Option>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="circularity">
+    <field name="circularity" configurationFlags="None">
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option type="bool" value="true" name="AllowNull"/>
-            <Option type="double" value="1e+09" name="Max"/>
-            <Option type="double" value="-1e+09" name="Min"/>
-            <Option type="int" value="2" name="Precision"/>
-            <Option type="int" value="1" name="Step"/>
-            <Option type="QString" value="SpinBox" name="Style"/>
+            <Option type="bool" name="AllowNull" value="true"/>
+            <Option type="double" name="Max" value="1e+09"/>
+            <Option type="double" name="Min" value="-1e+09"/>
+            <Option type="int" name="Precision" value="2"/>
+            <Option type="int" name="Step" value="1"/>
+            <Option type="QString" name="Style" value="SpinBox"/>
           </Option>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="depth_m">
+    <field name="depth_m" configurationFlags="None">
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option type="bool" value="true" name="AllowNull"/>
-            <Option type="double" value="1e+09" name="Max"/>
-            <Option type="double" value="-1e+09" name="Min"/>
-            <Option type="int" value="3" name="Precision"/>
-            <Option type="int" value="1" name="Step"/>
-            <Option type="QString" value="SpinBox" name="Style"/>
+            <Option type="bool" name="AllowNull" value="true"/>
+            <Option type="double" name="Max" value="1e+09"/>
+            <Option type="double" name="Min" value="-1e+09"/>
+            <Option type="int" name="Precision" value="3"/>
+            <Option type="int" name="Step" value="1"/>
+            <Option type="QString" name="Style" value="SpinBox"/>
           </Option>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="depth_sigma_m">
+    <field name="depth_sigma_m" configurationFlags="None">
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option type="bool" value="true" name="AllowNull"/>
-            <Option type="double" value="1e+09" name="Max"/>
-            <Option type="double" value="-1e+09" name="Min"/>
-            <Option type="int" value="3" name="Precision"/>
-            <Option type="int" value="1" name="Step"/>
-            <Option type="QString" value="SpinBox" name="Style"/>
+            <Option type="bool" name="AllowNull" value="true"/>
+            <Option type="double" name="Max" value="1e+09"/>
+            <Option type="double" name="Min" value="-1e+09"/>
+            <Option type="int" name="Precision" value="3"/>
+            <Option type="int" name="Step" value="1"/>
+            <Option type="QString" name="Style" value="SpinBox"/>
           </Option>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="diffusivity_m2s">
+    <field name="diffusivity_m2s" configurationFlags="None">
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option type="bool" value="false" name="IsMultiline"/>
-            <Option type="bool" value="false" name="UseHtml"/>
+            <Option type="bool" name="IsMultiline" value="false"/>
+            <Option type="bool" name="UseHtml" value="false"/>
           </Option>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="diffusivity_sigma_m2s">
+    <field name="diffusivity_sigma_m2s" configurationFlags="None">
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option type="bool" value="false" name="IsMultiline"/>
-            <Option type="bool" value="false" name="UseHtml"/>
+            <Option type="bool" name="IsMultiline" value="false"/>
+            <Option type="bool" name="UseHtml" value="false"/>
           </Option>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="status">
+    <field name="status" configurationFlags="None">
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option type="bool" value="false" name="IsMultiline"/>
-            <Option type="bool" value="false" name="UseHtml"/>
+            <Option type="bool" name="IsMultiline" value="false"/>
+            <Option type="bool" name="UseHtml" value="false"/>
           </Option>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="polarity">
+    <field name="polarity" configurationFlags="None">
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option type="bool" value="false" name="IsMultiline"/>
-            <Option type="bool" value="false" name="UseHtml"/>
+            <Option type="bool" name="IsMultiline" value="false"/>
+            <Option type="bool" name="UseHtml" value="false"/>
           </Option>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="class_cue">
+    <field name="class_cue" configurationFlags="None">
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option type="bool" value="false" name="IsMultiline"/>
-            <Option type="bool" value="false" name="UseHtml"/>
+            <Option type="bool" name="IsMultiline" value="false"/>
+            <Option type="bool" name="UseHtml" value="false"/>
           </Option>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="confidence">
+    <field name="confidence" configurationFlags="None">
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option type="bool" value="true" name="AllowNull"/>
-            <Option type="double" value="1e+09" name="Max"/>
-            <Option type="double" value="-1e+09" name="Min"/>
-            <Option type="int" value="2" name="Precision"/>
-            <Option type="int" value="1" name="Step"/>
-            <Option type="QString" value="SpinBox" name="Style"/>
+            <Option type="bool" name="AllowNull" value="true"/>
+            <Option type="double" name="Max" value="1e+09"/>
+            <Option type="double" name="Min" value="-1e+09"/>
+            <Option type="int" name="Precision" value="2"/>
+            <Option type="int" name="Step" value="1"/>
+            <Option type="QString" name="Style" value="SpinBox"/>
           </Option>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="n_scans">
+    <field name="n_scans" configurationFlags="None">
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option type="bool" value="false" name="IsMultiline"/>
-            <Option type="bool" value="false" name="UseHtml"/>
+            <Option type="bool" name="IsMultiline" value="false"/>
+            <Option type="bool" name="UseHtml" value="false"/>
           </Option>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="contrast_day_k">
+    <field name="contrast_day_k" configurationFlags="None">
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option type="bool" value="true" name="AllowNull"/>
-            <Option type="double" value="1e+09" name="Max"/>
-            <Option type="double" value="-1e+09" name="Min"/>
-            <Option type="int" value="2" name="Precision"/>
-            <Option type="int" value="1" name="Step"/>
-            <Option type="QString" value="SpinBox" name="Style"/>
+            <Option type="bool" name="AllowNull" value="true"/>
+            <Option type="double" name="Max" value="1e+09"/>
+            <Option type="double" name="Min" value="-1e+09"/>
+            <Option type="int" name="Precision" value="2"/>
+            <Option type="int" name="Step" value="1"/>
+            <Option type="QString" name="Style" value="SpinBox"/>
           </Option>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="contrast_night_k">
+    <field name="contrast_night_k" configurationFlags="None">
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option type="bool" value="true" name="AllowNull"/>
-            <Option type="double" value="1e+09" name="Max"/>
-            <Option type="double" value="-1e+09" name="Min"/>
-            <Option type="int" value="2" name="Precision"/>
-            <Option type="int" value="1" name="Step"/>
-            <Option type="QString" value="SpinBox" name="Style"/>
+            <Option type="bool" name="AllowNull" value="true"/>
+            <Option type="double" name="Max" value="1e+09"/>
+            <Option type="double" name="Min" value="-1e+09"/>
+            <Option type="int" name="Precision" value="2"/>
+            <Option type="int" name="Step" value="1"/>
+            <Option type="QString" name="Style" value="SpinBox"/>
           </Option>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="fix_quality">
+    <field name="fix_quality" configurationFlags="None">
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option type="bool" value="false" name="IsMultiline"/>
-            <Option type="bool" value="false" name="UseHtml"/>
+            <Option type="bool" name="IsMultiline" value="false"/>
+            <Option type="bool" name="UseHtml" value="false"/>
           </Option>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="figure">
+    <field name="figure" configurationFlags="None">
       <editWidget type="">
         <config>
           <Option/>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="contrast_series">
+    <field name="contrast_series" configurationFlags="None">
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option type="bool" value="false" name="IsMultiline"/>
-            <Option type="bool" value="false" name="UseHtml"/>
+            <Option type="bool" name="IsMultiline" value="false"/>
+            <Option type="bool" name="UseHtml" value="false"/>
           </Option>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="short_id">
+    <field name="short_id" configurationFlags="None">
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option type="bool" value="false" name="IsMultiline"/>
-            <Option type="bool" value="false" name="UseHtml"/>
+            <Option type="bool" name="IsMultiline" value="false"/>
+            <Option type="bool" name="UseHtml" value="false"/>
           </Option>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="depth">
+    <field name="depth" configurationFlags="None">
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option type="bool" value="false" name="IsMultiline"/>
-            <Option type="bool" value="false" name="UseHtml"/>
+            <Option type="bool" name="IsMultiline" value="false"/>
+            <Option type="bool" name="UseHtml" value="false"/>
           </Option>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="diffusivity">
+    <field name="diffusivity" configurationFlags="None">
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option type="bool" value="false" name="IsMultiline"/>
-            <Option type="bool" value="false" name="UseHtml"/>
+            <Option type="bool" name="IsMultiline" value="false"/>
+            <Option type="bool" name="UseHtml" value="false"/>
           </Option>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="likelihood">
+    <field name="likelihood" configurationFlags="None">
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option type="bool" value="false" name="IsMultiline"/>
-            <Option type="bool" value="false" name="UseHtml"/>
+            <Option type="bool" name="IsMultiline" value="false"/>
+            <Option type="bool" name="UseHtml" value="false"/>
           </Option>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="cue_confidence_pct">
+    <field name="cue_confidence_pct" configurationFlags="None">
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option type="bool" value="false" name="IsMultiline"/>
-            <Option type="bool" value="false" name="UseHtml"/>
+            <Option type="bool" name="IsMultiline" value="false"/>
+            <Option type="bool" name="UseHtml" value="false"/>
           </Option>
         </config>
       </editWidget>
@@ -706,133 +706,133 @@
     <alias field="cue_confidence_pct" index="27" name="Class cue confidence"/>
   </aliases>
   <defaults>
-    <default expression="" field="fid" applyOnUpdate="0"/>
-    <default expression="" field="anomaly_id" applyOnUpdate="0"/>
-    <default expression="" field="x" applyOnUpdate="0"/>
-    <default expression="" field="y" applyOnUpdate="0"/>
-    <default expression="" field="lat" applyOnUpdate="0"/>
-    <default expression="" field="lon" applyOnUpdate="0"/>
-    <default expression="" field="area_m2" applyOnUpdate="0"/>
-    <default expression="" field="diameter_m" applyOnUpdate="0"/>
-    <default expression="" field="circularity" applyOnUpdate="0"/>
-    <default expression="" field="depth_m" applyOnUpdate="0"/>
-    <default expression="" field="depth_sigma_m" applyOnUpdate="0"/>
-    <default expression="" field="diffusivity_m2s" applyOnUpdate="0"/>
-    <default expression="" field="diffusivity_sigma_m2s" applyOnUpdate="0"/>
-    <default expression="" field="status" applyOnUpdate="0"/>
-    <default expression="" field="polarity" applyOnUpdate="0"/>
-    <default expression="" field="class_cue" applyOnUpdate="0"/>
-    <default expression="" field="confidence" applyOnUpdate="0"/>
-    <default expression="" field="n_scans" applyOnUpdate="0"/>
-    <default expression="" field="contrast_day_k" applyOnUpdate="0"/>
-    <default expression="" field="contrast_night_k" applyOnUpdate="0"/>
-    <default expression="" field="fix_quality" applyOnUpdate="0"/>
-    <default expression="" field="figure" applyOnUpdate="0"/>
-    <default expression="" field="contrast_series" applyOnUpdate="0"/>
-    <default expression="" field="short_id" applyOnUpdate="0"/>
-    <default expression="" field="depth" applyOnUpdate="0"/>
-    <default expression="" field="diffusivity" applyOnUpdate="0"/>
-    <default expression="" field="likelihood" applyOnUpdate="0"/>
-    <default expression="" field="cue_confidence_pct" applyOnUpdate="0"/>
+    <default field="fid" expression="" applyOnUpdate="0"/>
+    <default field="anomaly_id" expression="" applyOnUpdate="0"/>
+    <default field="x" expression="" applyOnUpdate="0"/>
+    <default field="y" expression="" applyOnUpdate="0"/>
+    <default field="lat" expression="" applyOnUpdate="0"/>
+    <default field="lon" expression="" applyOnUpdate="0"/>
+    <default field="area_m2" expression="" applyOnUpdate="0"/>
+    <default field="diameter_m" expression="" applyOnUpdate="0"/>
+    <default field="circularity" expression="" applyOnUpdate="0"/>
+    <default field="depth_m" expression="" applyOnUpdate="0"/>
+    <default field="depth_sigma_m" expression="" applyOnUpdate="0"/>
+    <default field="diffusivity_m2s" expression="" applyOnUpdate="0"/>
+    <default field="diffusivity_sigma_m2s" expression="" applyOnUpdate="0"/>
+    <default field="status" expression="" applyOnUpdate="0"/>
+    <default field="polarity" expression="" applyOnUpdate="0"/>
+    <default field="class_cue" expression="" applyOnUpdate="0"/>
+    <default field="confidence" expression="" applyOnUpdate="0"/>
+    <default field="n_scans" expression="" applyOnUpdate="0"/>
+    <default field="contrast_day_k" expression="" applyOnUpdate="0"/>
+    <default field="contrast_night_k" expression="" applyOnUpdate="0"/>
+    <default field="fix_quality" expression="" applyOnUpdate="0"/>
+    <default field="figure" expression="" applyOnUpdate="0"/>
+    <default field="contrast_series" expression="" applyOnUpdate="0"/>
+    <default field="short_id" expression="" applyOnUpdate="0"/>
+    <default field="depth" expression="" applyOnUpdate="0"/>
+    <default field="diffusivity" expression="" applyOnUpdate="0"/>
+    <default field="likelihood" expression="" applyOnUpdate="0"/>
+    <default field="cue_confidence_pct" expression="" applyOnUpdate="0"/>
   </defaults>
   <constraints>
-    <constraint field="fid" constraints="3" unique_strength="1" notnull_strength="1" exp_strength="0"/>
-    <constraint field="anomaly_id" constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0"/>
-    <constraint field="x" constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0"/>
-    <constraint field="y" constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0"/>
-    <constraint field="lat" constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0"/>
-    <constraint field="lon" constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0"/>
-    <constraint field="area_m2" constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0"/>
-    <constraint field="diameter_m" constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0"/>
-    <constraint field="circularity" constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0"/>
-    <constraint field="depth_m" constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0"/>
-    <constraint field="depth_sigma_m" constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0"/>
-    <constraint field="diffusivity_m2s" constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0"/>
-    <constraint field="diffusivity_sigma_m2s" constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0"/>
-    <constraint field="status" constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0"/>
-    <constraint field="polarity" constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0"/>
-    <constraint field="class_cue" constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0"/>
-    <constraint field="confidence" constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0"/>
-    <constraint field="n_scans" constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0"/>
-    <constraint field="contrast_day_k" constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0"/>
-    <constraint field="contrast_night_k" constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0"/>
-    <constraint field="fix_quality" constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0"/>
-    <constraint field="figure" constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0"/>
-    <constraint field="contrast_series" constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0"/>
-    <constraint field="short_id" constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0"/>
-    <constraint field="depth" constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0"/>
-    <constraint field="diffusivity" constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0"/>
-    <constraint field="likelihood" constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0"/>
-    <constraint field="cue_confidence_pct" constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0"/>
+    <constraint exp_strength="0" field="fid" constraints="3" notnull_strength="1" unique_strength="1"/>
+    <constraint exp_strength="0" field="anomaly_id" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint exp_strength="0" field="x" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint exp_strength="0" field="y" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint exp_strength="0" field="lat" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint exp_strength="0" field="lon" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint exp_strength="0" field="area_m2" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint exp_strength="0" field="diameter_m" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint exp_strength="0" field="circularity" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint exp_strength="0" field="depth_m" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint exp_strength="0" field="depth_sigma_m" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint exp_strength="0" field="diffusivity_m2s" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint exp_strength="0" field="diffusivity_sigma_m2s" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint exp_strength="0" field="status" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint exp_strength="0" field="polarity" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint exp_strength="0" field="class_cue" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint exp_strength="0" field="confidence" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint exp_strength="0" field="n_scans" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint exp_strength="0" field="contrast_day_k" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint exp_strength="0" field="contrast_night_k" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint exp_strength="0" field="fix_quality" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint exp_strength="0" field="figure" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint exp_strength="0" field="contrast_series" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint exp_strength="0" field="short_id" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint exp_strength="0" field="depth" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint exp_strength="0" field="diffusivity" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint exp_strength="0" field="likelihood" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint exp_strength="0" field="cue_confidence_pct" constraints="0" notnull_strength="0" unique_strength="0"/>
   </constraints>
   <constraintExpressions>
-    <constraint desc="" field="fid" exp=""/>
-    <constraint desc="" field="anomaly_id" exp=""/>
-    <constraint desc="" field="x" exp=""/>
-    <constraint desc="" field="y" exp=""/>
-    <constraint desc="" field="lat" exp=""/>
-    <constraint desc="" field="lon" exp=""/>
-    <constraint desc="" field="area_m2" exp=""/>
-    <constraint desc="" field="diameter_m" exp=""/>
-    <constraint desc="" field="circularity" exp=""/>
-    <constraint desc="" field="depth_m" exp=""/>
-    <constraint desc="" field="depth_sigma_m" exp=""/>
-    <constraint desc="" field="diffusivity_m2s" exp=""/>
-    <constraint desc="" field="diffusivity_sigma_m2s" exp=""/>
-    <constraint desc="" field="status" exp=""/>
-    <constraint desc="" field="polarity" exp=""/>
-    <constraint desc="" field="class_cue" exp=""/>
-    <constraint desc="" field="confidence" exp=""/>
-    <constraint desc="" field="n_scans" exp=""/>
-    <constraint desc="" field="contrast_day_k" exp=""/>
-    <constraint desc="" field="contrast_night_k" exp=""/>
-    <constraint desc="" field="fix_quality" exp=""/>
-    <constraint desc="" field="figure" exp=""/>
-    <constraint desc="" field="contrast_series" exp=""/>
-    <constraint desc="" field="short_id" exp=""/>
-    <constraint desc="" field="depth" exp=""/>
-    <constraint desc="" field="diffusivity" exp=""/>
-    <constraint desc="" field="likelihood" exp=""/>
-    <constraint desc="" field="cue_confidence_pct" exp=""/>
+    <constraint exp="" field="fid" desc=""/>
+    <constraint exp="" field="anomaly_id" desc=""/>
+    <constraint exp="" field="x" desc=""/>
+    <constraint exp="" field="y" desc=""/>
+    <constraint exp="" field="lat" desc=""/>
+    <constraint exp="" field="lon" desc=""/>
+    <constraint exp="" field="area_m2" desc=""/>
+    <constraint exp="" field="diameter_m" desc=""/>
+    <constraint exp="" field="circularity" desc=""/>
+    <constraint exp="" field="depth_m" desc=""/>
+    <constraint exp="" field="depth_sigma_m" desc=""/>
+    <constraint exp="" field="diffusivity_m2s" desc=""/>
+    <constraint exp="" field="diffusivity_sigma_m2s" desc=""/>
+    <constraint exp="" field="status" desc=""/>
+    <constraint exp="" field="polarity" desc=""/>
+    <constraint exp="" field="class_cue" desc=""/>
+    <constraint exp="" field="confidence" desc=""/>
+    <constraint exp="" field="n_scans" desc=""/>
+    <constraint exp="" field="contrast_day_k" desc=""/>
+    <constraint exp="" field="contrast_night_k" desc=""/>
+    <constraint exp="" field="fix_quality" desc=""/>
+    <constraint exp="" field="figure" desc=""/>
+    <constraint exp="" field="contrast_series" desc=""/>
+    <constraint exp="" field="short_id" desc=""/>
+    <constraint exp="" field="depth" desc=""/>
+    <constraint exp="" field="diffusivity" desc=""/>
+    <constraint exp="" field="likelihood" desc=""/>
+    <constraint exp="" field="cue_confidence_pct" desc=""/>
   </constraintExpressions>
   <expressionfields>
-    <field expression="'S-' || lpad(to_string(to_int(regexp_substr(&quot;anomaly_id&quot;, '(\\d+)$'))), 3, '0')" type="10" comment="" length="0" precision="0" typeName="" subType="0" name="short_id"/>
-    <field expression="CASE WHEN &quot;depth_m&quot; * 100 IS NULL THEN 'not characterised' WHEN &quot;depth_sigma_m&quot; * 100 IS NULL THEN format_number(&quot;depth_m&quot; * 100, 1) || ' cm' ELSE format_number(&quot;depth_m&quot; * 100, 1) || ' ± ' || format_number(&quot;depth_sigma_m&quot; * 100, 1) || ' cm' END" type="10" comment="" length="0" precision="0" typeName="" subType="0" name="depth"/>
-    <field expression="CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 IS NULL THEN 'not characterised' WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 IS NULL THEN CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' mm²/s' ELSE CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' ± ' || CASE WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_sigma_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6))))) END || ' mm²/s' END" type="10" comment="" length="0" precision="0" typeName="" subType="0" name="diffusivity"/>
-    <field expression="CASE WHEN attribute('p_mine') IS NULL THEN NULL ELSE format_number(100 * attribute('p_mine'), 0) || ' %' END" type="10" comment="" length="0" precision="0" typeName="" subType="0" name="likelihood"/>
-    <field expression="CASE WHEN coalesce(attribute('cue_confidence'), attribute('confidence')) IS NULL THEN NULL ELSE format_number(100 * coalesce(attribute('cue_confidence'), attribute('confidence')), 0) || ' %' END" type="10" comment="" length="0" precision="0" typeName="" subType="0" name="cue_confidence_pct"/>
+    <field type="10" expression="'S-' || lpad(to_string(to_int(regexp_substr(&quot;anomaly_id&quot;, '(\\d+)$'))), 3, '0')" precision="0" comment="" length="0" typeName="" name="short_id" subType="0"/>
+    <field type="10" expression="CASE WHEN &quot;depth_m&quot; * 100 IS NULL THEN 'not characterised' WHEN &quot;depth_sigma_m&quot; * 100 IS NULL THEN format_number(&quot;depth_m&quot; * 100, 1) || ' cm' ELSE format_number(&quot;depth_m&quot; * 100, 1) || ' ± ' || format_number(&quot;depth_sigma_m&quot; * 100, 1) || ' cm' END" precision="0" comment="" length="0" typeName="" name="depth" subType="0"/>
+    <field type="10" expression="CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 IS NULL THEN 'not characterised' WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 IS NULL THEN CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' mm²/s' ELSE CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' ± ' || CASE WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_sigma_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6))))) END || ' mm²/s' END" precision="0" comment="" length="0" typeName="" name="diffusivity" subType="0"/>
+    <field type="10" expression="CASE WHEN attribute('p_mine') IS NULL THEN 'not estimated' ELSE format_number(100 * attribute('p_mine'), 0) || ' %' END" precision="0" comment="" length="0" typeName="" name="likelihood" subType="0"/>
+    <field type="10" expression="CASE WHEN coalesce(attribute('cue_confidence'), attribute('confidence')) IS NULL THEN NULL ELSE format_number(100 * coalesce(attribute('cue_confidence'), attribute('confidence')), 0) || ' %' END" precision="0" comment="" length="0" typeName="" name="cue_confidence_pct" subType="0"/>
   </expressionfields>
-  <attributetableconfig actionWidgetStyle="dropDown" sortExpression="coalesce(attribute('priority'), 1000000 * (CASE WHEN &quot;class_cue&quot; = 'at_mine' THEN 0 WHEN &quot;class_cue&quot; = 'ap_mine' THEN 1 WHEN &quot;class_cue&quot; = 'unknown' THEN 2 ELSE 3 END) - round(1000 * max(abs(&quot;contrast_day_k&quot;), abs(&quot;contrast_night_k&quot;))))" sortOrder="0">
+  <attributetableconfig sortOrder="0" actionWidgetStyle="dropDown" sortExpression="coalesce(attribute('priority'), 1000000 * (CASE WHEN &quot;class_cue&quot; = 'at_mine' THEN 0 WHEN &quot;class_cue&quot; = 'ap_mine' THEN 1 WHEN &quot;class_cue&quot; = 'unknown' THEN 2 ELSE 3 END) - round(1000 * max(abs(&quot;contrast_day_k&quot;), abs(&quot;contrast_night_k&quot;))))">
     <columns>
-      <column type="field" width="-1" hidden="0" name="fid"/>
-      <column type="field" width="-1" hidden="0" name="anomaly_id"/>
-      <column type="field" width="-1" hidden="0" name="x"/>
-      <column type="field" width="-1" hidden="0" name="y"/>
-      <column type="field" width="-1" hidden="0" name="lat"/>
-      <column type="field" width="-1" hidden="0" name="lon"/>
-      <column type="field" width="-1" hidden="0" name="area_m2"/>
-      <column type="field" width="-1" hidden="0" name="diameter_m"/>
-      <column type="field" width="-1" hidden="0" name="circularity"/>
-      <column type="field" width="-1" hidden="0" name="depth_m"/>
-      <column type="field" width="-1" hidden="0" name="depth_sigma_m"/>
-      <column type="field" width="-1" hidden="0" name="diffusivity_m2s"/>
-      <column type="field" width="-1" hidden="0" name="diffusivity_sigma_m2s"/>
-      <column type="field" width="-1" hidden="0" name="status"/>
-      <column type="field" width="-1" hidden="0" name="polarity"/>
-      <column type="field" width="-1" hidden="0" name="class_cue"/>
-      <column type="field" width="-1" hidden="0" name="confidence"/>
-      <column type="field" width="-1" hidden="0" name="n_scans"/>
-      <column type="field" width="-1" hidden="0" name="contrast_day_k"/>
-      <column type="field" width="-1" hidden="0" name="contrast_night_k"/>
-      <column type="field" width="-1" hidden="0" name="fix_quality"/>
-      <column type="field" width="-1" hidden="0" name="figure"/>
-      <column type="field" width="-1" hidden="0" name="contrast_series"/>
-      <column type="field" width="-1" hidden="0" name="short_id"/>
-      <column type="field" width="-1" hidden="0" name="depth"/>
-      <column type="field" width="-1" hidden="0" name="diffusivity"/>
-      <column type="field" width="-1" hidden="0" name="likelihood"/>
-      <column type="field" width="-1" hidden="0" name="cue_confidence_pct"/>
-      <column type="actions" width="-1" hidden="1"/>
+      <column type="field" name="fid" hidden="0" width="-1"/>
+      <column type="field" name="anomaly_id" hidden="0" width="-1"/>
+      <column type="field" name="x" hidden="0" width="-1"/>
+      <column type="field" name="y" hidden="0" width="-1"/>
+      <column type="field" name="lat" hidden="0" width="-1"/>
+      <column type="field" name="lon" hidden="0" width="-1"/>
+      <column type="field" name="area_m2" hidden="0" width="-1"/>
+      <column type="field" name="diameter_m" hidden="0" width="-1"/>
+      <column type="field" name="circularity" hidden="0" width="-1"/>
+      <column type="field" name="depth_m" hidden="0" width="-1"/>
+      <column type="field" name="depth_sigma_m" hidden="0" width="-1"/>
+      <column type="field" name="diffusivity_m2s" hidden="0" width="-1"/>
+      <column type="field" name="diffusivity_sigma_m2s" hidden="0" width="-1"/>
+      <column type="field" name="status" hidden="0" width="-1"/>
+      <column type="field" name="polarity" hidden="0" width="-1"/>
+      <column type="field" name="class_cue" hidden="0" width="-1"/>
+      <column type="field" name="confidence" hidden="0" width="-1"/>
+      <column type="field" name="n_scans" hidden="0" width="-1"/>
+      <column type="field" name="contrast_day_k" hidden="0" width="-1"/>
+      <column type="field" name="contrast_night_k" hidden="0" width="-1"/>
+      <column type="field" name="fix_quality" hidden="0" width="-1"/>
+      <column type="field" name="figure" hidden="0" width="-1"/>
+      <column type="field" name="contrast_series" hidden="0" width="-1"/>
+      <column type="field" name="short_id" hidden="0" width="-1"/>
+      <column type="field" name="depth" hidden="0" width="-1"/>
+      <column type="field" name="diffusivity" hidden="0" width="-1"/>
+      <column type="field" name="likelihood" hidden="0" width="-1"/>
+      <column type="field" name="cue_confidence_pct" hidden="0" width="-1"/>
+      <column type="actions" hidden="1" width="-1"/>
     </columns>
   </attributetableconfig>
   <conditionalstyles>
@@ -848,53 +848,53 @@
   <featformsuppress>0</featformsuppress>
   <editorlayout>tablayout</editorlayout>
   <attributeEditorForm>
-    <attributeEditorContainer visibilityExpression="" columnCount="1" groupBox="1" showLabel="1" visibilityExpressionEnabled="0" name="Suspect">
-      <attributeEditorContainer visibilityExpression="" columnCount="1" groupBox="1" showLabel="1" visibilityExpressionEnabled="0" name="Identification">
-        <attributeEditorField index="23" showLabel="1" name="short_id"/>
-        <attributeEditorField index="1" showLabel="1" name="anomaly_id"/>
-        <attributeEditorField index="15" showLabel="1" name="class_cue"/>
-        <attributeEditorField index="26" showLabel="1" name="likelihood"/>
-        <attributeEditorField index="27" showLabel="1" name="cue_confidence_pct"/>
-        <attributeEditorField index="13" showLabel="1" name="status"/>
-        <attributeEditorField index="14" showLabel="1" name="polarity"/>
+    <attributeEditorContainer name="Suspect" visibilityExpression="" groupBox="0" columnCount="1" showLabel="1" visibilityExpressionEnabled="0">
+      <attributeEditorContainer name="Identification" visibilityExpression="" groupBox="1" columnCount="1" showLabel="1" visibilityExpressionEnabled="0">
+        <attributeEditorField index="23" name="short_id" showLabel="1"/>
+        <attributeEditorField index="1" name="anomaly_id" showLabel="1"/>
+        <attributeEditorField index="15" name="class_cue" showLabel="1"/>
+        <attributeEditorField index="26" name="likelihood" showLabel="1"/>
+        <attributeEditorField index="27" name="cue_confidence_pct" showLabel="1"/>
+        <attributeEditorField index="13" name="status" showLabel="1"/>
+        <attributeEditorField index="14" name="polarity" showLabel="1"/>
       </attributeEditorContainer>
-      <attributeEditorContainer visibilityExpression="" columnCount="1" groupBox="1" showLabel="1" visibilityExpressionEnabled="0" name="Burial depth and soil">
-        <attributeEditorField index="24" showLabel="1" name="depth"/>
-        <attributeEditorField index="25" showLabel="1" name="diffusivity"/>
+      <attributeEditorContainer name="Burial depth and soil" visibilityExpression="" groupBox="1" columnCount="1" showLabel="1" visibilityExpressionEnabled="0">
+        <attributeEditorField index="24" name="depth" showLabel="1"/>
+        <attributeEditorField index="25" name="diffusivity" showLabel="1"/>
       </attributeEditorContainer>
-      <attributeEditorContainer visibilityExpression="" columnCount="1" groupBox="1" showLabel="1" visibilityExpressionEnabled="0" name="Thermal contrast">
-        <attributeEditorField index="18" showLabel="1" name="contrast_day_k"/>
-        <attributeEditorField index="19" showLabel="1" name="contrast_night_k"/>
-        <attributeEditorField index="17" showLabel="1" name="n_scans"/>
+      <attributeEditorContainer name="Thermal contrast" visibilityExpression="" groupBox="1" columnCount="1" showLabel="1" visibilityExpressionEnabled="0">
+        <attributeEditorField index="18" name="contrast_day_k" showLabel="1"/>
+        <attributeEditorField index="19" name="contrast_night_k" showLabel="1"/>
+        <attributeEditorField index="17" name="n_scans" showLabel="1"/>
       </attributeEditorContainer>
-      <attributeEditorContainer visibilityExpression="" columnCount="1" groupBox="1" showLabel="1" visibilityExpressionEnabled="0" name="Shape">
-        <attributeEditorField index="7" showLabel="1" name="diameter_m"/>
-        <attributeEditorField index="6" showLabel="1" name="area_m2"/>
-        <attributeEditorField index="8" showLabel="1" name="circularity"/>
-      </attributeEditorContainer>
-    </attributeEditorContainer>
-    <attributeEditorContainer visibilityExpression="" columnCount="1" groupBox="1" showLabel="1" visibilityExpressionEnabled="0" name="Contrast curve">
-      <attributeEditorContainer visibilityExpression="" columnCount="1" groupBox="1" showLabel="1" visibilityExpressionEnabled="0" name="Contrast curve">
-        <attributeEditorField index="21" showLabel="1" name="figure"/>
+      <attributeEditorContainer name="Shape" visibilityExpression="" groupBox="1" columnCount="1" showLabel="1" visibilityExpressionEnabled="0">
+        <attributeEditorField index="7" name="diameter_m" showLabel="1"/>
+        <attributeEditorField index="6" name="area_m2" showLabel="1"/>
+        <attributeEditorField index="8" name="circularity" showLabel="1"/>
       </attributeEditorContainer>
     </attributeEditorContainer>
-    <attributeEditorContainer visibilityExpression="" columnCount="1" groupBox="1" showLabel="1" visibilityExpressionEnabled="0" name="Position">
-      <attributeEditorContainer visibilityExpression="" columnCount="1" groupBox="1" showLabel="1" visibilityExpressionEnabled="0" name="Position">
-        <attributeEditorField index="2" showLabel="1" name="x"/>
-        <attributeEditorField index="3" showLabel="1" name="y"/>
-        <attributeEditorField index="4" showLabel="1" name="lat"/>
-        <attributeEditorField index="5" showLabel="1" name="lon"/>
-        <attributeEditorField index="20" showLabel="1" name="fix_quality"/>
+    <attributeEditorContainer name="Contrast curve" visibilityExpression="" groupBox="0" columnCount="1" showLabel="1" visibilityExpressionEnabled="0">
+      <attributeEditorContainer name="Contrast curve" visibilityExpression="" groupBox="1" columnCount="1" showLabel="1" visibilityExpressionEnabled="0">
+        <attributeEditorField index="21" name="figure" showLabel="1"/>
       </attributeEditorContainer>
     </attributeEditorContainer>
-    <attributeEditorContainer visibilityExpression="" columnCount="1" groupBox="1" showLabel="1" visibilityExpressionEnabled="0" name="Stored values">
-      <attributeEditorContainer visibilityExpression="" columnCount="1" groupBox="1" showLabel="1" visibilityExpressionEnabled="0" name="Stored values">
-        <attributeEditorField index="9" showLabel="1" name="depth_m"/>
-        <attributeEditorField index="10" showLabel="1" name="depth_sigma_m"/>
-        <attributeEditorField index="11" showLabel="1" name="diffusivity_m2s"/>
-        <attributeEditorField index="12" showLabel="1" name="diffusivity_sigma_m2s"/>
-        <attributeEditorField index="16" showLabel="1" name="confidence"/>
-        <attributeEditorField index="22" showLabel="1" name="contrast_series"/>
+    <attributeEditorContainer name="Position" visibilityExpression="" groupBox="0" columnCount="1" showLabel="1" visibilityExpressionEnabled="0">
+      <attributeEditorContainer name="Position" visibilityExpression="" groupBox="1" columnCount="1" showLabel="1" visibilityExpressionEnabled="0">
+        <attributeEditorField index="2" name="x" showLabel="1"/>
+        <attributeEditorField index="3" name="y" showLabel="1"/>
+        <attributeEditorField index="4" name="lat" showLabel="1"/>
+        <attributeEditorField index="5" name="lon" showLabel="1"/>
+        <attributeEditorField index="20" name="fix_quality" showLabel="1"/>
+      </attributeEditorContainer>
+    </attributeEditorContainer>
+    <attributeEditorContainer name="Stored values" visibilityExpression="" groupBox="0" columnCount="1" showLabel="1" visibilityExpressionEnabled="0">
+      <attributeEditorContainer name="Stored values" visibilityExpression="" groupBox="1" columnCount="1" showLabel="1" visibilityExpressionEnabled="0">
+        <attributeEditorField index="9" name="depth_m" showLabel="1"/>
+        <attributeEditorField index="10" name="depth_sigma_m" showLabel="1"/>
+        <attributeEditorField index="11" name="diffusivity_m2s" showLabel="1"/>
+        <attributeEditorField index="12" name="diffusivity_sigma_m2s" showLabel="1"/>
+        <attributeEditorField index="16" name="confidence" showLabel="1"/>
+        <attributeEditorField index="22" name="contrast_series" showLabel="1"/>
       </attributeEditorContainer>
     </attributeEditorContainer>
   </attributeEditorForm>

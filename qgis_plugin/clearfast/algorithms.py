@@ -49,8 +49,8 @@ def gpkg_uri(gpkg: str, layer: str) -> str:
     return f"{gpkg}|layername={layer}"
 
 
-class ToolkitAlgorithm(QgsProcessingAlgorithm):
-    """Shared behaviour: toolkit check, run with progress and cancellation, layer outputs."""
+class ClearfastAlgorithm(QgsProcessingAlgorithm):
+    """Name, title, help, group and icon of the provider's algorithms."""
 
     NAME = ""
     TITLE = ""
@@ -72,10 +72,17 @@ class ToolkitAlgorithm(QgsProcessingAlgorithm):
         return QIcon(ICON_PATH)
 
     def shortHelpString(self):
-        return self.HELP + "\n\nRuns the clearfast toolkit's command line (`clearfast`)."
+        return self.HELP
 
     def createInstance(self):
         return type(self)()
+
+
+class ToolkitAlgorithm(ClearfastAlgorithm):
+    """Shared behaviour: toolkit check, run with progress and cancellation, layer outputs."""
+
+    def shortHelpString(self):
+        return self.HELP + "\n\nRuns the clearfast toolkit's command line (`clearfast`)."
 
     def canExecute(self):
         return toolkit_available()
@@ -315,3 +322,38 @@ class ValidateSurveyAlgorithm(ToolkitAlgorithm):
             if self.load_on_completion(context, uri, "Survey markers", "delimitedtext"):
                 outputs["MARKERS"] = uri
         return outputs
+
+
+class FieldMapAlgorithm(ClearfastAlgorithm):
+    """The one-page field map (PDF) of a products folder; needs only QGIS, not the toolkit."""
+
+    NAME = "fieldmap"
+    TITLE = "Field map (PDF)"
+    HELP = ("An A4 field map of a products folder as PDF: the footprint over the scan with the "
+            "best contrast, suspects (mine indications labelled) and markers, UTM grid and "
+            "WGS84 ticks, scale bar, north arrow, legend, a title block (survey, dates, CRS, "
+            "method, the indirect-evidence disclaimer) and the table of mine indications with "
+            "their coordinates. Runs in QGIS; the current project is not changed.")
+
+    def flags(self):
+        # layouts and map rendering belong on the main thread
+        return super().flags() | QgsProcessingAlgorithm.FlagNoThreading
+
+    def initAlgorithm(self, config=None):
+        self.addParameter(QgsProcessingParameterFile(
+            "PRODUCTS", "Products folder", behavior=QgsProcessingParameterFile.Folder))
+        self.addParameter(QgsProcessingParameterFileDestination(
+            "OUTPUT", "Field map", "PDF files (*.pdf)"))
+
+    def processAlgorithm(self, parameters, context, feedback):
+        from .fieldmap import export_field_map
+        from .loader import ProductsError
+
+        folder = self.parameterAsFile(parameters, "PRODUCTS", context)
+        pdf = self.parameterAsFileOutput(parameters, "OUTPUT", context)
+        try:
+            export_field_map(folder, pdf)
+        except (ProductsError, OSError) as exc:
+            raise QgsProcessingException(str(exc)) from None
+        feedback.pushInfo(f"field map: {pdf}")
+        return {"OUTPUT": pdf}

@@ -15,15 +15,6 @@ from tests.plugin.test_loader import _render, _rgb
 pytestmark = pytest.mark.qgis
 
 
-@pytest.fixture()
-def project(qgis_app):
-    from qgis.core import QgsProject
-
-    proj = QgsProject()
-    yield proj
-    proj.clear()
-
-
 def test_demo_products_load_with_styles_time_and_counts(project, demo_products, tmp_path):
     from clearfast.loader import load_products
 

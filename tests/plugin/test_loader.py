@@ -15,15 +15,6 @@ PLUGIN = Path(__file__).resolve().parents[2] / "qgis_plugin" / "clearfast"
 
 
 @pytest.fixture()
-def project(qgis_app):
-    from qgis.core import QgsProject
-
-    proj = QgsProject()
-    yield proj
-    proj.clear()
-
-
-@pytest.fixture()
 def loaded(project, products):
     from clearfast.loader import load_products
 
@@ -234,8 +225,9 @@ class FakeIface:
     def addToolBarIcon(self, action):
         self.toolbar.append(action)
 
-    def removeToolBarIcon(self, action):
-        self.toolbar.remove(action)
+    def removeToolBarIcon(self, action):  # QGIS ignores an action that is not there
+        if action in self.toolbar:
+            self.toolbar.remove(action)
 
 
 def test_plugin_gui_unload_removes_everything(session_plugin):
@@ -251,9 +243,10 @@ def test_plugin_gui_unload_removes_everything(session_plugin):
     try:
         plugin.initGui()
         assert registry.providerById("clearfast") is plugin.provider
-        assert len(iface.menu) == 1 and len(iface.toolbar) == 1
-        assert iface.menu[0][0] == "&CLEARFAST"
+        assert len(iface.menu) == 2 and len(iface.toolbar) == 1
+        assert {m for m, _ in iface.menu} == {"&CLEARFAST"}
         assert iface.menu[0][1].text().startswith("Open survey products")
+        assert iface.menu[1][1].text().startswith("Export field map")
         plugin.unload()
         assert iface.menu == [] and iface.toolbar == []
         assert registry.providerById("clearfast") is None
@@ -262,4 +255,4 @@ def test_plugin_gui_unload_removes_everything(session_plugin):
         session_plugin.initProcessing()
     assert len(registry.providers()) == before
     assert {a.name() for a in registry.providerById("clearfast").algorithms()} == {
-        "processsurvey", "rerundetection", "exportmineaction", "validatesurvey"}
+        "processsurvey", "rerundetection", "exportmineaction", "validatesurvey", "fieldmap"}

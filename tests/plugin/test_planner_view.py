@@ -16,15 +16,6 @@ pytestmark = pytest.mark.qgis
 MINES = {"A001", "A002", "A003", "A004"}  # at_mine / ap_mine in make_demo_products
 
 
-@pytest.fixture()
-def project(qgis_app):
-    from qgis.core import QgsProject
-
-    proj = QgsProject()
-    yield proj
-    proj.clear()
-
-
 def _open(gpkg: Path, layer: str = "suspects"):
     from qgis.core import QgsVectorLayer
 
@@ -91,7 +82,7 @@ def test_values_with_units_and_precision(products, qgis_app):
     assert layer.attributeDisplayName(layer.fields().indexOf("contrast_day_k")) \
         == "Day contrast (K)"
     assert layer.attributeDisplayName(layer.fields().indexOf("depth")) == "Burial depth ± 1σ"
-    assert shown(layer, a1, "likelihood") == "NULL"  # no p_mine in these products
+    assert shown(layer, a1, "likelihood") == "not estimated"  # no p_mine in these products
 
 
 def test_likelihood_in_percent_with_ranking_fields(ranked_products, qgis_app):
