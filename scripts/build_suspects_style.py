@@ -1,5 +1,8 @@
 """Build ``clearfast_gis/styles/suspects.qml`` (the planner's default style) in real QGIS.
 
+It also gives the anomaly outlines (``anomalies.qml``, same fields) the same fields and form,
+keeping their symbology.
+
 Run with QGIS's Python (Debian ``python3-qgis``), from the repository root::
 
     QT_QPA_PLATFORM=offscreen python scripts/build_suspects_style.py
@@ -100,6 +103,7 @@ ALIASES = {
     "status": "Characterisation status", "polarity": "Polarity", "class_cue": "Class cue",
     "confidence": "Class cue confidence (0-1)", "cue_confidence": "Class cue confidence (0-1)",
     "p_mine": "Mine likelihood (0-1)", "priority": "Priority (1 = first)",
+    "set_aside_reason": "Set aside because",
     "n_scans": "Scans seen", "contrast_day_k": "Day contrast (K)",
     "contrast_night_k": "Night contrast (K)", "fix_quality": "GNSS fix quality",
     "figure": "Contrast curve", "contrast_series": "Contrast series (JSON)",
@@ -107,8 +111,8 @@ ALIASES = {
 
 FORM = (
     ("Suspect", (
-        ("Identification", ("short_id", "anomaly_id", "class_cue", "likelihood",
-                            "cue_confidence_pct", "status", "polarity")),
+        ("Identification", ("short_id", "anomaly_id", "priority", "class_cue", "likelihood",
+                            "cue_confidence_pct", "status", "polarity", "set_aside_reason")),
         ("Burial depth and soil", ("depth", "diffusivity")),
         ("Thermal contrast", ("contrast_day_k", "contrast_night_k", "n_scans")),
         ("Shape", ("diameter_m", "area_m2", "circularity")),
@@ -116,8 +120,8 @@ FORM = (
     ("Contrast curve", (("Contrast curve", ("figure",)),)),
     ("Position", (("Position", ("x", "y", "lat", "lon", "fix_quality")),)),
     ("Stored values", (("Stored values", (
-        "depth_m", "depth_sigma_m", "diffusivity_m2s", "diffusivity_sigma_m2s", "confidence",
-        "contrast_series")),)),
+        "depth_m", "depth_sigma_m", "diffusivity_m2s", "diffusivity_sigma_m2s", "p_mine",
+        "cue_confidence", "confidence", "contrast_series")),)),
 )
 """Form tabs -> group boxes -> fields."""
 
@@ -230,63 +234,96 @@ def form(layer) -> None:
     layer.setEditFormConfig(config)
 
 
-def build(out: Path) -> None:
-    from qgis.core import (
-        QgsApplication,
-        QgsEditorWidgetSetup,
-        QgsField,
-        QgsMapLayer,
-        QgsVectorLayer,
-    )
+RANKING_FIELDS = (("p_mine", "Double"), ("priority", "Int"), ("cue_confidence", "Double"),
+                  ("set_aside_reason", "String"))
+"""Fields of the ranked-suspects products that the demo products lack: the style is built on a
+layer that has them too, so their aliases, formats and form places are stored as well."""
+
+
+def style_layer(gpkg: Path, name: str, geometry: str):
+    """An empty memory layer with the fields of ``gpkg``'s layer ``name`` and the ranking
+    fields, in the survey CRS."""
+    from qgis.core import QgsField, QgsVectorLayer
     from qgis.PyQt.QtCore import QVariant
+
+    options = QgsVectorLayer.LayerOptions(loadDefaultStyle=False)
+    source = QgsVectorLayer(f"{gpkg}|layername={name}", name, "ogr", options)
+    assert source.isValid()
+    layer = QgsVectorLayer(f"{geometry}?crs={source.crs().authid()}", name, "memory")
+    fields = [f for f in source.fields() if f.name() != "fid"]
+    fields += [QgsField(n, getattr(QVariant, kind)) for n, kind in RANKING_FIELDS
+               if source.fields().indexOf(n) < 0]
+    layer.dataProvider().addAttributes(fields)
+    layer.updateFields()
+    return layer
+
+
+def apply_fields(layer) -> None:
+    """Virtual fields, aliases, widgets with precision, form, table order, map tip."""
+    from qgis.core import QgsEditorWidgetSetup, QgsField
+    from qgis.PyQt.QtCore import QVariant
+
+    for name, kind, expr, _ in VIRTUAL_FIELDS:
+        layer.addExpressionField(expr, QgsField(name, getattr(QVariant, kind)))
+    # aliases first: setting an alias afterwards drops the field's widget set-up
+    aliases = dict(ALIASES, **{n: a for n, _, _, a in VIRTUAL_FIELDS})
+    for idx, fld in enumerate(layer.fields()):
+        if fld.name() in aliases:
+            layer.setFieldAlias(idx, aliases[fld.name()])
+    for idx, fld in enumerate(layer.fields()):
+        name = fld.name()
+        if name in PRECISION:
+            layer.setEditorWidgetSetup(idx, QgsEditorWidgetSetup("Range", {
+                "Precision": PRECISION[name], "Min": -1e9, "Max": 1e9, "Step": 1,
+                "Style": "SpinBox", "AllowNull": True}))
+        elif name != "figure":
+            layer.setEditorWidgetSetup(idx, QgsEditorWidgetSetup("TextEdit", {
+                "IsMultiline": False, "UseHtml": False}))
+    form(layer)
+    table = layer.attributeTableConfig()
+    table.setSortExpression(ORDER_KEY)
+    table.setSortOrder(0)
+    layer.setAttributeTableConfig(table)
+    layer.setMapTipTemplate(MAP_TIP)
+    layer.setDisplayExpression('"short_id"')
+
+
+def save(layer, out: Path) -> None:
+    from qgis.core import QgsMapLayer
+
+    categories = (QgsMapLayer.Symbology | QgsMapLayer.Labeling | QgsMapLayer.Fields
+                  | QgsMapLayer.Forms | QgsMapLayer.MapTips | QgsMapLayer.Rendering
+                  | QgsMapLayer.AttributeTable)
+    message, ok = layer.saveNamedStyle(str(out), categories)
+    assert ok, message
+
+
+def build(styles_dir: Path) -> None:
+    """Write ``suspects.qml`` and ``anomalies.qml`` (the outlines keep their symbology)."""
+    from qgis.core import QgsApplication, QgsMapLayer
 
     from clearfast_gis.export.testing import make_demo_products
 
     app = QgsApplication([], False)
     app.initQgis()
     with tempfile.TemporaryDirectory() as tmp:
-        products = make_demo_products(Path(tmp) / "p")
-        gpkg = products.root / "anomalies.gpkg"
-        options = QgsVectorLayer.LayerOptions(loadDefaultStyle=False)
-        layer = QgsVectorLayer(f"{gpkg}|layername=suspects", "suspects", "ogr", options)
-        assert layer.isValid()
-        for name, kind, expr, _ in VIRTUAL_FIELDS:
-            layer.addExpressionField(expr, QgsField(name, getattr(QVariant, kind)))
-        # aliases first: setting an alias afterwards drops the field's widget set-up
-        aliases = dict(ALIASES, **{n: a for n, _, _, a in VIRTUAL_FIELDS})
-        for idx, fld in enumerate(layer.fields()):
-            if fld.name() in aliases:
-                layer.setFieldAlias(idx, aliases[fld.name()])
-        for idx, fld in enumerate(layer.fields()):
-            name = fld.name()
-            if name in PRECISION:
-                layer.setEditorWidgetSetup(idx, QgsEditorWidgetSetup("Range", {
-                    "Precision": PRECISION[name], "Min": -1e9, "Max": 1e9, "Step": 1,
-                    "Style": "SpinBox", "AllowNull": True}))
-            elif name != "figure":
-                layer.setEditorWidgetSetup(idx, QgsEditorWidgetSetup("TextEdit", {
-                    "IsMultiline": False, "UseHtml": False}))
-        layer.setRenderer(renderer())
-        layer.setLabeling(labeling())
-        layer.setLabelsEnabled(True)
-        form(layer)
-        table = layer.attributeTableConfig()
-        table.setSortExpression(ORDER_KEY)
-        table.setSortOrder(0)
-        layer.setAttributeTableConfig(table)
-        layer.setMapTipTemplate(MAP_TIP)
-        layer.setDisplayExpression('"short_id"')
-        categories = (QgsMapLayer.Symbology | QgsMapLayer.Labeling | QgsMapLayer.Fields
-                      | QgsMapLayer.Forms | QgsMapLayer.MapTips | QgsMapLayer.Rendering
-                      | QgsMapLayer.AttributeTable)
-        message, ok = layer.saveNamedStyle(str(out), categories)
-        assert ok, message
+        gpkg = make_demo_products(Path(tmp) / "p").root / "anomalies.gpkg"
+        suspects = style_layer(gpkg, "suspects", "Point")
+        apply_fields(suspects)
+        suspects.setRenderer(renderer())
+        suspects.setLabeling(labeling())
+        suspects.setLabelsEnabled(True)
+        save(suspects, styles_dir / "suspects.qml")
+        # the pipeline's outlines carry the suspects' columns (make_demo_products' do not)
+        outlines = style_layer(gpkg, "suspects", "MultiPolygon")
+        outlines.loadNamedStyle(str(styles_dir / "anomalies.qml"), QgsMapLayer.Symbology)
+        apply_fields(outlines)
+        save(outlines, styles_dir / "anomalies.qml")
     app.exitQgis()
 
 
 if __name__ == "__main__":
     from clearfast_gis.export.styles import STYLES_DIR
 
-    target = STYLES_DIR / "suspects.qml"
-    build(target)
-    print(target)
+    build(STYLES_DIR)
+    print(STYLES_DIR / "suspects.qml", STYLES_DIR / "anomalies.qml")

@@ -58,19 +58,24 @@ def test_styles_from_geopackage_applied(loaded):
     assert loaded.vectors["markers"].labeling().settings().fieldName == "marker_id"
 
 
-def test_suspect_form_shows_inversion_and_figure(loaded, products):
-    suspects = loaded.vectors["suspects"]
-    config = suspects.editFormConfig()
-    fields_in_form = set()
+def form_field_names(layer) -> set[str]:
+    """Names of the fields placed anywhere in a layer's drag-and-drop form."""
+    names = set()
 
     def walk(element):
         for child in element.children():
             if hasattr(child, "children"):
                 walk(child)
             else:
-                fields_in_form.add(child.name())
+                names.add(child.name())
 
-    walk(config.invisibleRootContainer())
+    walk(layer.editFormConfig().invisibleRootContainer())
+    return names
+
+
+def test_suspect_form_shows_inversion_and_figure(loaded, products):
+    suspects = loaded.vectors["suspects"]
+    fields_in_form = form_field_names(suspects)
     assert {"depth_m", "depth_sigma_m", "diffusivity_m2s", "diffusivity_sigma_m2s", "status",
             "class_cue", "figure"} <= fields_in_form
     setup = suspects.editorWidgetSetup(suspects.fields().indexOf("figure"))

@@ -154,3 +154,22 @@ def test_candidates_hidden_but_loaded(project, ranked_products):
     assert not root.findLayer(loaded.vectors["candidates"].id()).isVisible()
     assert root.findLayer(loaded.vectors["suspects"].id()).isVisible()
     assert loaded.vectors["candidates"].renderer().type() == "RuleRenderer"
+
+
+def test_outlines_share_the_formats(products, qgis_app):
+    layer = _open(products.root / "anomalies.gpkg", "anomalies")
+    a1 = _by_id(layer)["A001"]  # these outlines have only id, polarity and area
+    assert shown(layer, a1, "area_m2") == f"{a1['area_m2']:.3f}"
+    assert layer.attributeDisplayName(layer.fields().indexOf("area_m2")) == "Area (m²)"
+    assert layer.renderer().type() == "categorizedSymbol"  # warm/cool by day, as before
+    assert not layer.labelsEnabled()
+
+
+def test_form_has_the_ranking_fields_when_present(ranked_products, qgis_app):
+    from tests.plugin.test_loader import form_field_names
+
+    layer = _open(ranked_products / "anomalies.gpkg")
+    assert {"priority", "likelihood", "p_mine", "cue_confidence", "depth"} <= form_field_names(
+        layer)
+    assert layer.attributeDisplayName(layer.fields().indexOf("priority")) \
+        == "Priority (1 = first)"
