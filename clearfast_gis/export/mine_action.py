@@ -27,7 +27,7 @@ from pathlib import Path
 
 import numpy as np
 
-from clearfast_gis.atomic import write_text
+from clearfast_gis.atomic import write_bytes, write_text
 from clearfast_gis.errors import InvalidInput
 from clearfast_gis.progress import NULL_PROGRESS, Progress
 from clearfast_gis.timeutil import format_utc, parse_utc
@@ -44,6 +44,7 @@ GPKG_NAME = "mine_action.gpkg"
 CSV_NAME = "mine_action.csv"
 HAZARD_CSV = "hazard_proposals.csv"
 AREA_CSV = "surveyed_area.csv"
+XLSX_NAME = "mine_action.xlsx"
 MINE_CUES = ("at_mine", "ap_mine")
 DEFAULT_MIN_LIKELIHOOD = 0.5
 """Mine likelihood (``p_mine``) from which a suspect is exported as evidence."""
@@ -138,6 +139,7 @@ class MineActionExport:
     hazard_proposals: int
     hazard_csv: Path
     area_csv: Path
+    xlsx: Path
 
 
 def survey_code(survey_id: str) -> str:
@@ -403,7 +405,8 @@ def export_mine_action(products_dir: str | os.PathLike, out_dir: str | os.PathLi
     """Write ``mine_action.gpkg`` (EPSG:4326) and its CSV tables for IMSMA Core.
 
     Layers: ``indications`` (evidence points), ``hazard_proposals`` and ``surveyed_area``
-    (polygons); CSVs ``mine_action.csv``, ``hazard_proposals.csv``, ``surveyed_area.csv``.
+    (polygons); CSVs ``mine_action.csv``, ``hazard_proposals.csv``, ``surveyed_area.csv``, and
+    the three tables as sheets of ``mine_action.xlsx``.
     Field names and geometries are checked before anything is written.
 
     Parameters
@@ -441,6 +444,7 @@ def export_mine_action(products_dir: str | os.PathLike, out_dir: str | os.PathLi
     )
     from clearfast_gis.export.manifest import read_products_manifest
     from clearfast_gis.export.styles import mine_action_styles
+    from clearfast_gis.export.xlsx import workbook_bytes
 
     products = Path(products_dir)
     out = Path(out_dir) if out_dir is not None else products / "mine_action"
@@ -486,13 +490,17 @@ def export_mine_action(products_dir: str | os.PathLike, out_dir: str | os.PathLi
             check_field_names([c for c in frame.columns if c != "geometry"], gpkg_out, name)
             check_geometries(list(frame.geometry), list(frame["imsma_id"]), gpkg_out, name)
         progress.advance()
-        write_geopackage(gpkg_out, layers, mine_action_styles(),
-                         timestamp_s=parse_utc(manifest["time"]["end_utc"]))
+        end_s = parse_utc(manifest["time"]["end_utc"])
+        write_geopackage(gpkg_out, layers, mine_action_styles(), timestamp_s=end_s)
         csv_out = write_text(out / CSV_NAME, table_to_csv(evidence))
         hazard_csv = write_text(out / HAZARD_CSV, table_to_csv(hazards, HAZARD_FIELDS))
         area_csv = write_text(out / AREA_CSV, table_to_csv(area, AREA_FIELDS))
+        xlsx = write_bytes(out / XLSX_NAME, workbook_bytes(
+            {"evidence": (evidence, list(MINE_ACTION_FIELDS)),
+             HAZARD_LAYER: (hazards, list(HAZARD_FIELDS)),
+             AREA_LAYER: (area, list(AREA_FIELDS))}, _DECIMALS, end_s))
         progress.advance()
     finally:
         progress.close()
     return MineActionExport(gpkg_out, Path(csv_out), len(evidence), len(hazards),
-                            Path(hazard_csv), Path(area_csv))
+                            Path(hazard_csv), Path(area_csv), Path(xlsx))

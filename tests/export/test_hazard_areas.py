@@ -104,6 +104,25 @@ def _assert_ready_for_imsma(res):
     for row in _csv(res.hazard_csv) + _csv(res.area_csv):
         poly = shapely.from_wkt(row["wkt"])
         check_geometries([poly], [row["imsma_id"]], res.hazard_csv, "csv")
+    # the workbook holds the same three tables, numbers as numbers
+    from openpyxl import load_workbook
+
+    book = load_workbook(res.xlsx, read_only=True)
+    assert book.sheetnames == ["evidence", "hazard_proposals", "surveyed_area"]
+    for sheet, path in zip(book.sheetnames, (res.csv, res.hazard_csv, res.area_csv),
+                           strict=True):
+        rows = list(book[sheet].iter_rows(values_only=True))
+        table = _csv(path)
+        assert list(rows[0]) == list(table[0]) if table else True
+        assert len(rows) - 1 == len(table)
+        for got, want in zip(rows[1:], table, strict=True):
+            for value, (name, text) in zip(got, want.items(), strict=True):
+                if text == "":
+                    assert value is None, name
+                elif isinstance(value, str):
+                    assert value == text, name
+                else:
+                    assert value == pytest.approx(float(text), abs=1e-8), name
 
 
 def test_export_cue_based_surveyed_area_and_proposals(demo_products, tmp_path):

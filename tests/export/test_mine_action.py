@@ -96,7 +96,7 @@ def test_export_is_reproducible(demo_products, tmp_path):
     export_mine_action(demo_products.root, tmp_path / "a")
     export_mine_action(demo_products.root, tmp_path / "b")
     for name in ("mine_action.csv", "hazard_proposals.csv", "surveyed_area.csv",
-                 "mine_action.gpkg"):
+                 "mine_action.gpkg", "mine_action.xlsx"):
         assert (tmp_path / "a" / name).read_bytes() == (tmp_path / "b" / name).read_bytes()
 
 
