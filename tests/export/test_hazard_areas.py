@@ -178,3 +178,22 @@ def test_export_with_likelihood_threshold_and_all(demo_products, tmp_path):
     with pytest.raises(InvalidInput):
         export_mine_action(root, tmp_path / "c", buffer_m=-1.0)
     assert not (tmp_path / "c").exists()
+
+
+def test_workbook_bytes_do_not_depend_on_the_clock():
+    import time
+
+    import pandas as pd
+
+    from clearfast_gis.export.xlsx import workbook_bytes
+
+    table = pd.DataFrame({"imsma_id": ["CF-A-0001", "CF-A-0002"], "depth_m": [0.0123456, None],
+                          "n": [3, 4]})
+    sheets = {"evidence": (table, ["imsma_id", "depth_m", "n"])}
+    first = workbook_bytes(sheets, {"depth_m": 4}, 1794787200.0)
+    time.sleep(1.1)  # a later second of the wall clock
+    assert workbook_bytes(sheets, {"depth_m": 4}, 1794787200.0) == first
+    from openpyxl import load_workbook
+
+    rows = list(load_workbook(io.BytesIO(first)).active.iter_rows(values_only=True))
+    assert rows == [("imsma_id", "depth_m", "n"), ("CF-A-0001", 0.0123, 3), ("CF-A-0002", None, 4)]
