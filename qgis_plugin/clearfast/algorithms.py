@@ -236,11 +236,15 @@ class ValidateSurveyAlgorithm(ToolkitAlgorithm):
     NAME = "validatesurvey"
     TITLE = "Validate survey"
     HELP = ("Check a survey folder completely (manifest, frames, logs, markers) and report every "
-            "problem. Writes the toolkit's JSON report when an output file is given.")
+            "problem. Writes the toolkit's JSON report when an output file is given. A station "
+            "profile (JSON) maps a real weather station's or soil logger's columns and units "
+            "(default: the one survey.json names).")
 
     def initAlgorithm(self, config=None):
         self.addParameter(QgsProcessingParameterFile(
             "SURVEY", "Survey folder", behavior=QgsProcessingParameterFile.Folder))
+        self.addParameter(QgsProcessingParameterFile(
+            "STATION_PROFILE", "Station profile (JSON)", extension="json", optional=True))
         self.addParameter(QgsProcessingParameterFileDestination(
             "REPORT", "Validation report (JSON)", "JSON files (*.json)", optional=True))
         self.addOutput(QgsProcessingOutputBoolean("VALID", "Survey is valid"))
@@ -251,7 +255,11 @@ class ValidateSurveyAlgorithm(ToolkitAlgorithm):
     def processAlgorithm(self, parameters, context, feedback):
         survey = self.parameterAsFile(parameters, "SURVEY", context)
         report = self.parameterAsFileOutput(parameters, "REPORT", context)
-        result = self.run_cli(["validate", survey, "--json"], feedback)
+        profile = self.parameterAsFile(parameters, "STATION_PROFILE", context)
+        args = ["validate", survey, "--json"]
+        if profile:
+            args += ["--station-profile", profile]
+        result = self.run_cli(args, feedback)
         if result.returncode not in (0, 1):
             raise QgsProcessingException(f"clearfast failed: {error_line(result)}")
         valid = result.returncode == 0

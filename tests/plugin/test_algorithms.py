@@ -167,6 +167,20 @@ def test_validate_survey_reports_invalid(qgis_app, fake_toolkit, tmp_path, monke
     assert "camera.resolution: expected 2 integers" in feedback.textLog()
 
 
+def test_validate_survey_takes_a_station_profile(qgis_app, real_toolkit, tmp_path):
+    from tests.survey.test_station_profile_cli import PROFILE, station_survey
+
+    survey = station_survey(tmp_path / "s")
+    results, ok, _, feedback = run_alg("clearfast:validatesurvey", {"SURVEY": str(survey)})
+    assert ok and results["VALID"] is False
+    assert "weather.dat: line 2: missing air temperature" in feedback.textLog()
+    profile = tmp_path / "station.json"
+    profile.write_text(json.dumps(PROFILE))
+    results, ok, _, feedback = run_alg("clearfast:validatesurvey", {
+        "SURVEY": str(survey), "STATION_PROFILE": str(profile)})
+    assert ok and results["VALID"] is True, feedback.textLog()
+
+
 def test_validate_survey_real_toolkit_lists_problems(qgis_app, real_toolkit, tmp_path):
     report = tmp_path / "report.json"
     results, ok, _, feedback = run_alg(
