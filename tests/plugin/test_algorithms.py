@@ -76,7 +76,8 @@ def layers_to_load(context):
 def test_export_mine_action_real_toolkit(qgis_app, products, real_toolkit, tmp_path):
     out = tmp_path / "ma"
     results, ok, context, feedback = run_alg(
-        "clearfast:exportmineaction", {"PRODUCTS": str(products.root), "OUTPUT": str(out)})
+        "clearfast:exportmineaction", {"PRODUCTS": str(products.root), "OUTPUT": str(out),
+                                       "ALL_SUSPECTS": True, "ORGANISATION": "Test org"})
     assert ok, feedback.textLog()
     assert results["COUNT"] == products.n_suspects
     assert os.path.isfile(results["CSV"])
@@ -86,6 +87,16 @@ def test_export_mine_action_real_toolkit(qgis_app, products, real_toolkit, tmp_p
     assert layer.featureCount() == products.n_suspects
     assert layer.renderer().type() == "categorizedSymbol"  # default style from the GeoPackage
     assert {f["land_class"] for f in layer.getFeatures()} == {"indication"}
+    assert {f["organisation"] for f in layer.getFeatures()} == {"Test org"}
+    hazards = layers["Hazard polygon proposals"]
+    assert hazards.isValid() and hazards.featureCount() >= 1
+    assert all(f.geometry().isGeosValid() for f in hazards.getFeatures())
+    assert layers["Surveyed area"].featureCount() == 1
+    # the default: only the mine indications (AT/AP cue) are evidence
+    results, ok, context, feedback = run_alg(
+        "clearfast:exportmineaction", {"PRODUCTS": str(products.root),
+                                       "OUTPUT": str(tmp_path / "mines")})
+    assert ok and results["COUNT"] == 4
     assert feedback.values and max(feedback.values) == pytest.approx(100.0)
 
 
