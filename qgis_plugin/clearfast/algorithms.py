@@ -37,6 +37,7 @@ from .toolkit import (
     error_line,
     run_toolkit,
     toolkit_available,
+    toolkit_defaults,
 )
 
 ICON_PATH = os.path.join(os.path.dirname(__file__), "icons", "clearfast.svg")
@@ -161,23 +162,36 @@ class RerunDetectionAlgorithm(ToolkitAlgorithm):
     HELP = ("Re-run anomaly detection on the mosaics of an existing products folder. D1: disc "
             "diameter of the top-hat (larger than the largest expected mine), D2: disc diameter "
             "of the binary opening (D2 < D1), epsilon: tail fraction of the contrast thresholds, "
-            "l: minimum number of scans a blob must appear in (empty = half the scans), gamma: "
-            "occurrence threshold of the combined hot/cold maps (empty = toolkit default).")
+            "l: number of images (scans x bands) a blob must appear in (empty = the toolkit's "
+            "default: {level} of the images covering each pixel), gamma: occurrence threshold of "
+            "the combined hot/cold maps (empty = {gamma} of the images covering each pixel). "
+            "The defaults shown are the toolkit's (`clearfast options`).")
+
+    def shortHelpString(self):
+        defaults = toolkit_defaults()
+
+        def share(key):
+            value = defaults.get(key)
+            return "the toolkit's share" if value is None else f"{value:g}"
+
+        return super().shortHelpString().format(level=share("level_fraction"),
+                                                gamma=share("gamma_fraction"))
 
     def initAlgorithm(self, config=None):
+        defaults = toolkit_defaults()
         self.addParameter(QgsProcessingParameterFile(
             "PRODUCTS", "Products folder", behavior=QgsProcessingParameterFile.Folder))
         self.addParameter(QgsProcessingParameterNumber(
-            "D1", "D1: top-hat disc diameter (m)", QgsProcessingParameterNumber.Double, 0.5,
-            minValue=0.01))
+            "D1", "D1: top-hat disc diameter (m)", QgsProcessingParameterNumber.Double,
+            defaults.get("d1_m"), minValue=0.01))
         self.addParameter(QgsProcessingParameterNumber(
-            "D2", "D2: opening disc diameter (m)", QgsProcessingParameterNumber.Double, 0.05,
-            minValue=0.0))
+            "D2", "D2: opening disc diameter (m)", QgsProcessingParameterNumber.Double,
+            defaults.get("d2_m"), minValue=0.0))
         self.addParameter(QgsProcessingParameterNumber(
             "EPSILON", "epsilon: threshold tail fraction", QgsProcessingParameterNumber.Double,
-            0.01, minValue=0.0, maxValue=0.5))
+            defaults.get("epsilon"), minValue=0.0, maxValue=0.5))
         self.addParameter(QgsProcessingParameterNumber(
-            "LEVEL", "l: minimum number of scans", QgsProcessingParameterNumber.Integer,
+            "LEVEL", "l: voting level (images)", QgsProcessingParameterNumber.Integer,
             None, optional=True, minValue=1))
         self.addParameter(QgsProcessingParameterNumber(
             "GAMMA", "gamma: occurrence threshold", QgsProcessingParameterNumber.Double,

@@ -287,3 +287,26 @@ def test_toolkit_command_fallbacks(qgis_app, monkeypatch, tmp_path):
     monkeypatch.setenv("PATH", str(tmp_path / "empty"))
     cmd = toolkit.toolkit_command()  # this checkout's toolkit is importable here
     assert cmd[1:] == ["-m", "clearfast_gis.cli.main"]
+
+
+def test_detection_defaults_are_the_toolkits(qgis_app, real_toolkit):
+    """The plugin shows the toolkit's own defaults (``clearfast options --json``), the same
+    ones ``clearfast detect`` uses: changing a default in ProcessOptions changes both."""
+    from qgis.core import QgsApplication
+
+    from clearfast_gis.pipeline.options import ProcessOptions
+
+    defaults = ProcessOptions()
+    alg = QgsApplication.processingRegistry().createAlgorithmById("clearfast:rerundetection")
+    shown = {name: alg.parameterDefinition(name).defaultValue()
+             for name in ("D1", "D2", "EPSILON", "LEVEL", "GAMMA")}
+    assert shown == {"D1": defaults.d1_m, "D2": defaults.d2_m, "EPSILON": defaults.epsilon,
+                     "LEVEL": defaults.level, "GAMMA": defaults.gamma}
+    assert f"{defaults.level_fraction:g} of the images" in alg.shortHelpString()
+
+
+def test_defaults_unknown_without_a_toolkit(qgis_app, fake_toolkit):
+    """A command that does not answer ``options --json`` gives no defaults, not made-up ones."""
+    from clearfast.toolkit import toolkit_defaults
+
+    assert toolkit_defaults() == {}
