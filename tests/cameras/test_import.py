@@ -158,3 +158,18 @@ def test_cli_folder_layout_and_refusal_of_existing_output(camera_dir, tmp_path):
     assert validate_survey(tmp_path / "s").valid
     r = subprocess.run(cmd, capture_output=True, text=True, timeout=300)
     assert r.returncode == 1 and "already exists" in r.stderr and "Traceback" not in r.stderr
+
+
+def test_calibrate_uses_the_camera_radiometry(camera_dir, tmp_path):
+    import_survey(spec(camera_dir), tmp_path / "survey")
+    r = subprocess.run([sys.executable, "-m", "clearfast_gis.cli.main", "calibrate",
+                        str(tmp_path / "survey"), "-o", str(tmp_path / "cal"), "--progress",
+                        "none"], capture_output=True, text=True, timeout=300)
+    assert r.returncode == 0, r.stderr
+    doc = json.loads(next((tmp_path / "cal").rglob("calibration.json")).read_text())
+    assert doc["bands"][0]["calibration"] == "camera radiometry (linear)"
+    assert doc["bands"][0]["n_events"] == 0
+    # at-sensor 15 +- 0.5 degC frames; the atmosphere over the ~10 m path moves them by
+    # well under a kelvin
+    assert doc["scans"][0]["mean_c"] == pytest.approx(15.0, abs=1.0)
+    assert doc["scans"][0]["invalid_pixels"] == 0
