@@ -31,6 +31,9 @@ def _summary_lines(summary: dict) -> list[str]:
     if "weather_records" in s:
         out.append(f"weather:     {s['weather_records']} records; "
                    f"{len(s.get('weather_gaps', []))} gap(s)")
+        cols = s.get("weather_columns") or {}
+        if cols:
+            out.append("  columns:   " + ", ".join(f"{q} <- {c}" for q, c in cols.items()))
     if "calibration_events" in s:
         out.append(f"calibration: {s['calibration_events']} blackbody event(s)")
     if "markers" in s:

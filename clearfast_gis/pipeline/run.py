@@ -44,14 +44,12 @@ from clearfast_gis.pipeline.options import MOSAIC_PARAMETERS, ProcessOptions
 from clearfast_gis.pipeline.products import base_manifest as _base_manifest
 from clearfast_gis.pipeline.products import write_anomaly_products, write_footprint_geojson
 from clearfast_gis.pipeline.resources import StageMeter, cpu_seconds
-from clearfast_gis.pipeline.state import RunState
+from clearfast_gis.pipeline.state import STATE_DIR, RunState
 from clearfast_gis.progress import NULL_PROGRESS, Progress
 from clearfast_gis.radiometry.stage import calibration_events, weather_at
 from clearfast_gis.registration import ConformalTransform, estimate_band_offsets
 from clearfast_gis.thermal.sitesoil import characterise, site_soil
 from clearfast_gis.timeutil import format_utc
-
-STATE_DIR = ".clearfast"
 
 
 def mosaic_rel(scan: int) -> str:

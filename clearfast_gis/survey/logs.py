@@ -124,11 +124,33 @@ def parse_soil_log(text: str, label: str = "soil.csv",
     return SoilLog(time_s=t, depth_m=np.asarray(depths)[order], temp_c=temp[:, order])
 
 
+#: soil temperature columns whose name states the depth (``Tsoil_5cm_Avg``, ``TC_10cm``,
+#: ``SoilT_0.05m``, ``T_0.050m_C``): recognised without a profile
+_DEPTH_NAME = re.compile(r"^(?:t|ts|tsoil|soilt|soiltemp|tc|temp)_?(\d+(?:\.\d+)?)(cm|mm|m)"
+                         r"(?:_c)?(?:_avg)?$", re.IGNORECASE)
+_DEPTH_UNIT_M = {"cm": 0.01, "mm": 0.001, "m": 1.0}
+
+
+def _depths_from_names(names: list[str]) -> dict[str, float]:
+    """Columns whose name states a depth (see :data:`_DEPTH_NAME`) -> depth, metres."""
+    out = {}
+    for n in names:
+        m = _DEPTH_NAME.match(n.strip())
+        if m:
+            out[n.strip()] = float(m.group(1)) * _DEPTH_UNIT_M[m.group(2).lower()]
+    return out
+
+
 def _parse_soil_toa5(text: str, label: str, profile: StationProfile | None) -> SoilLog:
-    """A TOA5 thermocouple table whose columns and depths a station profile names."""
+    """A TOA5 thermocouple table: columns and depths from the station profile, else from
+    column names that state the depth."""
     rows = csv_rows(text, label)
     names, units = toa5_header_lines(rows, label)
     depths = profile.soil_columns if profile is not None else None
+    if not depths:
+        depths = _depths_from_names(names)
+        if len(set(depths.values())) != len(depths):
+            raise InvalidInput("two columns have the same depth", label, "line 2")
     if not depths:
         raise InvalidInput("a TOA5 table as the soil log needs the depth of each thermocouple "
                            f"column; the file has columns {', '.join(names)}; give them in a "
@@ -142,7 +164,8 @@ def _parse_soil_toa5(text: str, label: str, profile: StationProfile | None) -> S
                            f"has columns {', '.join(names)}", label, "line 2")
     cols = sorted(depths, key=lambda c: depths[c])
     idx = [lower[c.lower()] for c in cols]
-    conv = [unit_conversion(profile.soil_unit or (units[i] if i < len(units) else ""),
+    soil_unit = profile.soil_unit if profile is not None else None
+    conv = [unit_conversion(soil_unit or (units[i] if i < len(units) else ""),
                             "soil_temp_c", label, f"line 3: {names[i]}") for i in idx]
     it = names.index("TIMESTAMP")
     data = rows[4:]

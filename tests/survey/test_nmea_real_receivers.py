@@ -244,3 +244,4 @@ def test_acquire_clock_replaying_real_receivers_never_jumps(name, tmp_path):
     assert np.all(np.diff(readings) >= 0.0)
     # the clock stays on the receiver's own valid dates (within a day of its epochs)
     assert min(abs(np.floor(readings[-1] / 86400.0) - d) for d in valid_days) <= 1
+

@@ -205,6 +205,16 @@ def test_soil_logger_table_with_depths_from_the_profile():
     assert np.isnan(log.temp_c[1, 0]) and log.temp_c[1, 1] == pytest.approx(15.5)
 
 
+def test_soil_columns_that_state_their_depth_need_no_profile():
+    text = ('"TOA5","soil","CR1000X","1","x","y","1","TC"\r\n'
+            '"TIMESTAMP","RECORD","Tsoil_5cm_Avg","Tsoil_20cm_Avg","TC_2cm","BattV"\r\n'
+            '"TS","RN","Deg C","Deg C","Deg C","Volts"\r\n"","","Avg","Avg","Smp","Smp"\r\n'
+            '"2026-11-15 00:00:00",0,15,12,18,12.9\r\n')
+    log = parse_soil_log(text)
+    np.testing.assert_allclose(log.depth_m, [0.02, 0.05, 0.2])
+    np.testing.assert_allclose(log.temp_c[0], [18.0, 15.0, 12.0])
+
+
 @real
 def test_a_real_weather_table_given_as_the_soil_log_says_what_to_do():
     with pytest.raises(InvalidInput, match="needs the depth of each thermocouple column"):
