@@ -297,7 +297,6 @@ def _coord(value: str, hemi: str, deg_digits: int, limit: float) -> float:
     return -v if hemi in ("S", "W") else v
 
 
-_PARSED: dict[tuple, GnssLog] = {}
 """The last logs parsed (a survey's log is parsed by the validation, then by the chain)."""
 
 
@@ -305,9 +304,8 @@ def parse_nmea(text: str, label: str = "gnss.nmea", fallback_date_s: float | Non
                ) -> GnssLog:
     """Parse NMEA 0183 text into a :class:`GnssLog`.
 
-    The result of the same text and ``fallback_date_s`` is remembered (the last two logs), so
-    validating a survey and then processing it parses its 24 h log once; treat it as
-    read-only.
+    Validating a survey parses its logs once; the chain takes them from the validation
+    report (:attr:`clearfast_gis.survey.validate.ValidationReport.logs`).
 
     Parameters
     ----------
@@ -324,17 +322,6 @@ def parse_nmea(text: str, label: str = "gnss.nmea", fallback_date_s: float | Non
     InvalidInput
         When the text holds no GGA sentence, or epochs cannot be dated.
     """
-    key = (len(text), hash(text), fallback_date_s)
-    if key not in _PARSED:
-        log = _parse_nmea(text, label, fallback_date_s)
-        while len(_PARSED) >= 2:
-            _PARSED.pop(next(iter(_PARSED)))
-        _PARSED[key] = log
-    return _PARSED[key]
-
-
-def _parse_nmea(text: str, label: str, fallback_date_s: float | None) -> GnssLog:
-    """:func:`parse_nmea` without the memory of recent logs."""
     records: list[tuple] = []  # (kind, tod_s, payload)
     bad_cs: list[int] = []
     junk: list[int] = []

@@ -42,6 +42,26 @@ class Problem:
         return ": ".join(p for p in (self.file, self.field, self.message) if p)
 
 
+@dataclass(frozen=True)
+class ParsedLogs:
+    """The survey's logs as validation parsed them, for the chain to use (each is parsed
+    once per run). None where a log is absent or could not be parsed (then the report holds
+    a problem).
+
+    Attributes
+    ----------
+    gnss : GnssLog or None
+    weather : WeatherLog or None
+    soil : SoilLog or None
+    markers : Markers or None
+    """
+
+    gnss: object = None
+    weather: object = None
+    soil: object = None
+    markers: object = None
+
+
 @dataclass
 class ValidationReport:
     """Result of :func:`validate_survey`.
@@ -55,11 +75,14 @@ class ValidationReport:
     summary : dict
         Counts and spans: frames, scans, positions, bands, time span, GNSS fix statistics,
         gaps, missing frames.
+    logs : ParsedLogs
+        The logs parsed on the way (not part of :meth:`to_dict`).
     """
 
     problems: list[Problem] = field(default_factory=list)
     warnings: list[Problem] = field(default_factory=list)
     summary: dict = field(default_factory=dict)
+    logs: ParsedLogs = field(default_factory=ParsedLogs, repr=False)
 
     @property
     def valid(self) -> bool:
@@ -165,6 +188,7 @@ def validate_survey(path: str | os.PathLike, gnss_gap_s: float = 10.0,
     root = Path(path)
     ck = _Checker(root)
     rep = ck.report
+    parsed: dict[str, object] = {}
     if not root.is_dir():
         ck.problem(str(root), "", "survey folder not found" if not root.exists()
                    else "expected a survey folder, got a file")
@@ -278,6 +302,7 @@ def validate_survey(path: str | os.PathLike, gnss_gap_s: float = 10.0,
         label = files["gnss"]
         with ck.guard(label):
             log = parse_nmea(gt, label, start_s)
+            parsed["gnss"] = log
             counts = log.fix_counts()
             n = len(log)
             n_fixed = counts.get(FIX_RTK_FIXED, 0)
@@ -308,6 +333,7 @@ def validate_survey(path: str | os.PathLike, gnss_gap_s: float = 10.0,
         label = files["weather"]
         with ck.guard(label):
             w = parse_toa5(wt, label)
+            parsed["weather"] = w
             summary["weather_records"] = len(w)
             if len(w) == 0:
                 ck.problem(label, "", "no records")
@@ -328,13 +354,17 @@ def validate_survey(path: str | os.PathLike, gnss_gap_s: float = 10.0,
         if key in files and (txt := ck.text(files[key], key)) is not None:
             with ck.guard(files[key]):
                 lg = parser(txt, files[key])
+                if key == "soil":
+                    parsed["soil"] = lg
                 if lg.time_s.size == 0:
                     ck.problem(files[key], "", "no records")
                 order(files[key], lg.time_s)
                 coverage(files[key], lg.time_s, what)
     if "markers" in files and (mk := ck.text(files["markers"], "markers")) is not None:
         with ck.guard(files["markers"]):
-            summary["markers"] = len(parse_markers(mk, files["markers"]))
+            parsed["markers"] = parse_markers(mk, files["markers"])
+            summary["markers"] = len(parsed["markers"])
+    rep.logs = ParsedLogs(**parsed)
     return rep
 
 
