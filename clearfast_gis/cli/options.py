@@ -37,6 +37,13 @@ survey_arg = click.argument(
     "survey", type=click.Path(exists=True, file_okay=False, dir_okay=True, readable=True)
 )
 
+station_profile_opt = click.option(
+    "--station-profile", "station_profile", default=None,
+    type=click.Path(exists=True, file_okay=True, dir_okay=False, readable=True),
+    help="Station profile (JSON) mapping the weather/soil logger's columns and units "
+         "(default: the file survey.json names in files.station_profile; docs/acquire.md).",
+)
+
 products_opt = click.option(
     "-o", "--output", "products", required=True,
     type=click.Path(file_okay=False, dir_okay=True, writable=True),

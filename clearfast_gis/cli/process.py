@@ -11,6 +11,7 @@ from clearfast_gis.cli.options import (
     products_opt,
     progress_opt,
     resume_opt,
+    station_profile_opt,
     survey_arg,
 )
 from clearfast_gis.pipeline.stages import STAGE_NAMES
@@ -27,9 +28,11 @@ from clearfast_gis.pipeline.stages import STAGE_NAMES
               "before it resume).")
 @click.option("--until", type=click.Choice(STAGE_NAMES), default=STAGE_NAMES[-1],
               show_default=True, help="Stop after this stage.")
+@station_profile_opt
 @resume_opt
 @progress_opt
-def command(survey, products, no_invert, from_stage, until, resume, progress_mode, **params):
+def command(survey, products, no_invert, from_stage, until, station_profile, resume,
+            progress_mode, **params):
     """Calibrate, mosaic, detect and characterise a survey; write COG mosaics,
     anomalies.gpkg, report.html and products.json into PRODUCTS.
 
@@ -44,7 +47,8 @@ def command(survey, products, no_invert, from_stage, until, resume, progress_mod
     options = build_options(params, invert=not no_invert)
     progress = make_progress(progress_mode)
     manifest = process_survey(survey, products, options, resume=resume, progress=progress,
-                              until=until, from_stage=from_stage)
+                              until=until, from_stage=from_stage,
+                              station_profile=station_profile)
     _summary(products, manifest, progress_mode)
 
 

@@ -28,16 +28,17 @@ def survey_epsg(survey, gnss) -> int:
     crs = survey.manifest.get("crs") or {}
     if crs.get("epsg"):
         return int(crs["epsg"])
-    ok = gnss.fix_quality > 0
+    ok = gnss.usable
     if not np.any(ok):
         raise InvalidInput("no GNSS fix to choose the UTM zone", survey.label("gnss"))
     i = int(np.flatnonzero(ok)[0])
     return utm_epsg_for(float(gnss.lat_deg[i]), float(gnss.lon_deg[i]))
 
 
-def input_key(survey) -> str:
-    """Identity of the inputs (manifest, frame table, logs) and of the toolkit's version (the
-    parameters key each stage's units, :mod:`clearfast_gis.pipeline.stages`)."""
+def input_key(survey, station_profile: str | Path | None = None) -> str:
+    """Identity of the inputs (manifest, frame table, logs, station profile) and of the
+    toolkit's version (the parameters key each stage's units,
+    :mod:`clearfast_gis.pipeline.stages`)."""
     import hashlib
 
     h = hashlib.sha256()
@@ -46,6 +47,10 @@ def input_key(survey) -> str:
         p = survey.path(key)
         st = p.stat()
         h.update(f"{key}:{st.st_size}:{st.st_mtime_ns}".encode())
+    if station_profile is not None:
+        h.update(Path(station_profile).read_bytes())
+    elif "station_profile" in survey.manifest["files"]:
+        h.update(survey.path("station_profile").read_bytes())
     h.update(__version__.encode())
     return h.hexdigest()[:20]
 
@@ -67,9 +72,11 @@ def pixel_size(survey, options: ProcessOptions) -> float:
     return MIN_DEFAULT_PIXEL_M
 
 
-def open_context(survey_path: str | Path, progress: Progress = NULL_PROGRESS):
+def open_context(survey_path: str | Path, progress: Progress = NULL_PROGRESS,
+                 station_profile: str | Path | None = None):
     """Read everything the chain needs from a survey folder, after validating it (the logs
-    validation parsed are used, not parsed again).
+    validation parsed are used, not parsed again); ``station_profile`` overrides the one
+    ``survey.json`` names.
 
     Returns
     -------
@@ -81,8 +88,9 @@ def open_context(survey_path: str | Path, progress: Progress = NULL_PROGRESS):
     """
     from clearfast_gis.survey import read_survey, validate_survey
     from clearfast_gis.survey.blackbody_check import check_blackbody_pairs
+    from clearfast_gis.survey.station_profiles import read_station_profile
 
-    report = validate_survey(survey_path)
+    report = validate_survey(survey_path, station_profile=station_profile)
     if not report.valid:
         first = report.problems[0].line()
         more = f" (and {len(report.problems) - 1} more problems: run clearfast validate)" \
@@ -96,6 +104,8 @@ def open_context(survey_path: str | Path, progress: Progress = NULL_PROGRESS):
     track = smooth_static_track(platform_track(
         gnss, epsg, float(survey.manifest["site"]["ground_altitude_m"]),
         source=survey.label("gnss")))
+    if station_profile is not None:
+        survey.use_station_profile(read_station_profile(station_profile))
     weather = report.logs.weather
     events = calibration_events(survey)
     check_blackbody_pairs(events, survey)

@@ -21,7 +21,8 @@ from clearfast_gis.progress import NULL_PROGRESS, Progress
 def process_survey(survey_path: str | Path, products: str | Path,
                    options: ProcessOptions | None = None, resume: bool = True,
                    progress: Progress = NULL_PROGRESS, until: str = stages.PRODUCTS,
-                   from_stage: str | None = None) -> dict:
+                   from_stage: str | None = None,
+                   station_profile: str | Path | None = None) -> dict:
     """Run the chain from a survey folder to a products folder.
 
     Parameters
@@ -42,6 +43,9 @@ def process_survey(survey_path: str | Path, products: str | Path,
     from_stage : str, optional
         Redo this stage and the ones after it even when they are up to date (the stages
         before it resume); ``"detection"`` is ``clearfast detect``.
+    station_profile : path, optional
+        Station profile of the weather and soil logs, instead of the one ``survey.json``
+        names (``files.station_profile``).
 
     Returns
     -------
@@ -62,7 +66,8 @@ characterisation, products)
     options = ProcessOptions() if options is None else options
     with kernels.use(options.kernels), serial_kernels():
         return _run(RunContext(Path(survey_path), Path(products), options, progress,
-                               StageMeter(), fresh=not resume), first, last)
+                               StageMeter(), fresh=not resume,
+                               station_profile=station_profile), first, last)
 
 
 def _run(c: RunContext, first: int | None, last: int) -> dict:

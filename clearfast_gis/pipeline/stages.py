@@ -41,6 +41,8 @@ class RunContext:
     meter : StageMeter
     fresh : bool
         Ignore the records of an earlier run (``--no-resume``).
+    station_profile : path or None
+        Station profile of the weather and soil logs instead of the survey's own.
     records : dict
         Stage name -> the record its ``run`` returned.
     state : RunState or None
@@ -53,6 +55,7 @@ class RunContext:
     progress: Progress
     meter: StageMeter
     fresh: bool = False
+    station_profile: Path | None = None
     records: dict[str, object] = field(default_factory=dict)
     state: RunState | None = None
     job: object = None
@@ -216,9 +219,9 @@ class Products:
 def _read(c: RunContext) -> SurveyRead:
     from clearfast_gis.pipeline import inputs
 
-    ctx, epsg, report = inputs.open_context(c.survey_path, c.progress)
+    ctx, epsg, report = inputs.open_context(c.survey_path, c.progress, c.station_profile)
     survey = ctx.survey
-    key = inputs.input_key(survey)
+    key = inputs.input_key(survey, c.station_profile)
     c.state = RunState(c.products, key)
     if c.fresh:
         c.state.units = {}

@@ -76,7 +76,8 @@ def layers_to_load(context):
 def test_export_mine_action_real_toolkit(qgis_app, products, real_toolkit, tmp_path):
     out = tmp_path / "ma"
     results, ok, context, feedback = run_alg(
-        "clearfast:exportmineaction", {"PRODUCTS": str(products.root), "OUTPUT": str(out)})
+        "clearfast:exportmineaction", {"PRODUCTS": str(products.root), "OUTPUT": str(out),
+                                       "ALL_SUSPECTS": True, "ORGANISATION": "Test org"})
     assert ok, feedback.textLog()
     assert results["COUNT"] == products.n_suspects
     assert os.path.isfile(results["CSV"])
@@ -86,6 +87,16 @@ def test_export_mine_action_real_toolkit(qgis_app, products, real_toolkit, tmp_p
     assert layer.featureCount() == products.n_suspects
     assert layer.renderer().type() == "categorizedSymbol"  # default style from the GeoPackage
     assert {f["land_class"] for f in layer.getFeatures()} == {"indication"}
+    assert {f["organisation"] for f in layer.getFeatures()} == {"Test org"}
+    hazards = layers["Hazard polygon proposals"]
+    assert hazards.isValid() and hazards.featureCount() >= 1
+    assert all(f.geometry().isGeosValid() for f in hazards.getFeatures())
+    assert layers["Surveyed area"].featureCount() == 1
+    # the default: only the mine indications (AT/AP cue) are evidence
+    results, ok, context, feedback = run_alg(
+        "clearfast:exportmineaction", {"PRODUCTS": str(products.root),
+                                       "OUTPUT": str(tmp_path / "mines")})
+    assert ok and results["COUNT"] == 4
     assert feedback.values and max(feedback.values) == pytest.approx(100.0)
 
 
@@ -165,6 +176,20 @@ def test_validate_survey_reports_invalid(qgis_app, fake_toolkit, tmp_path, monke
     results, ok, _, feedback = run_alg("clearfast:validatesurvey", {"SURVEY": str(tmp_path)})
     assert ok and results["VALID"] is False
     assert "camera.resolution: expected 2 integers" in feedback.textLog()
+
+
+def test_validate_survey_takes_a_station_profile(qgis_app, real_toolkit, tmp_path):
+    from tests.survey.test_station_profile_cli import PROFILE, station_survey
+
+    survey = station_survey(tmp_path / "s")
+    results, ok, _, feedback = run_alg("clearfast:validatesurvey", {"SURVEY": str(survey)})
+    assert ok and results["VALID"] is False
+    assert "weather.dat: line 2: missing air temperature" in feedback.textLog()
+    profile = tmp_path / "station.json"
+    profile.write_text(json.dumps(PROFILE))
+    results, ok, _, feedback = run_alg("clearfast:validatesurvey", {
+        "SURVEY": str(survey), "STATION_PROFILE": str(profile)})
+    assert ok and results["VALID"] is True, feedback.textLog()
 
 
 def test_validate_survey_real_toolkit_lists_problems(qgis_app, real_toolkit, tmp_path):
