@@ -55,9 +55,10 @@ def check_nmea(path: Path) -> tuple[str, bool]:
                    for c in cands):
             bad += 1
     repeats = int(np.count_nonzero(np.diff(log.time_s) == 0.0))
+    back = int(np.count_nonzero(np.diff(log.time_s) < 0.0))  # validate reports these
     ok = bad == 0 and repeats == 0
     return (f"{len(log)} epochs ({int(log.usable.sum())} fixes), {bad} disagree with pynmea2, "
-            f"{repeats} repeated times, {log.merged_epochs} merged, "
+            f"{repeats} repeated times, {back} steps back, {log.merged_epochs} merged, "
             f"{len(log.void_rmc_lines)} void RMC"), ok
 
 
