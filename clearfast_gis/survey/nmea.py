@@ -232,12 +232,6 @@ class GnssLog:
         return {int(a): int(b) for a, b in zip(q, n, strict=True)}
 
 
-_PARSED: dict[tuple, GnssLog] = {}
-"""The last logs parsed (a survey's log is parsed by the validation, then by the chain)."""
-
-
-"""The last logs parsed (a survey's log is parsed by the validation, then by the chain)."""
-
 #: an RMC or ZDA date farther than this from the survey's own start is refused (a receiver's
 #: cold-start or week-rollover date), seconds
 MAX_DATE_OFFSET_S = 7 * 86400.0
