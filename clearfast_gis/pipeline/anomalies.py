@@ -11,6 +11,7 @@ import numpy as np
 from clearfast_gis.detection.features import AnomalyFeatures
 from clearfast_gis.detection.markers import MarkerMatch
 from clearfast_gis.thermal import Inversion
+from clearfast_gis.thermal.daycontrast import DayContrast
 
 
 @dataclass
@@ -31,6 +32,8 @@ class AnomalySet:
         What the characterisation had to skip, and why.
     markers : list of MarkerMatch
         Known markers found among the anomalies (removed from ``features``).
+    day : DayContrast or None
+        How much contrast the day gave (the thermal model of the logs), when characterised.
     """
 
     labels: np.ndarray
@@ -40,3 +43,4 @@ class AnomalySet:
     soil_alpha_sigma_m2s: float = math.nan
     notes: list[str] = dataclasses.field(default_factory=list)
     markers: list[MarkerMatch] = dataclasses.field(default_factory=list)
+    day: DayContrast | None = None

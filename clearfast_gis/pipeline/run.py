@@ -593,8 +593,10 @@ def _mosaics_digest(state: RunState, scans: list[int]) -> str:
 def _anomaly_stage(ctx, survey, products: Path, options: ProcessOptions, state: RunState,
                    scan_records: dict[int, dict], epsg: int, grid, report, meter: StageMeter,
                    progress: Progress) -> dict:
+    from clearfast_gis.detection.clutter import background_clutter_k
     from clearfast_gis.survey import read_soil_log
     from clearfast_gis.thermal import forcing_from_weather
+    from clearfast_gis.thermal.daycontrast import contrast_noise_k, day_contrast
 
     done = state.done("anomalies")
     mosaics = _mosaics_digest(state, sorted(scan_records))
@@ -620,6 +622,7 @@ def _anomaly_stage(ctx, survey, products: Path, options: ProcessOptions, state: 
         marker_matches = markers_in_mosaics(stack, grid, marker_ids, marker_xy)
     notes: list[str] = []
     inversions = {}
+    day = None
     alpha = sigma = math.nan
     with meter.stage("characterisation"):
         if options.invert and feats:
@@ -629,9 +632,13 @@ def _anomaly_stage(ctx, survey, products: Path, options: ProcessOptions, state: 
             background = np.array([np.nanmedian(img[outside]) for img in stack[:, 0]])
             soil, alpha, sigma = site_soil(soil_log, forcing, times, background)
             inversions = characterise(feats, times, forcing, soil, progress=progress)
+            noise = contrast_noise_k(inversions, survey, background_clutter_k(
+                stack[:, 0], labels, grid.pixel_size))
+            day = day_contrast(forcing, soil, times, noise,
+                               float(survey.manifest["site"]["latitude_deg"]), lon)
         elif not options.invert:
             notes.append("thermal characterisation switched off")
-    anomalies = AnomalySet(labels, feats, inversions, alpha, sigma, notes, marker_matches)
+    anomalies = AnomalySet(labels, feats, inversions, alpha, sigma, notes, marker_matches, day)
     fixq = _fix_quality_summary(ctx)
     code = survey.manifest["survey_id"]
     records = suspect_records(anomalies, times, lon, fixq["worst_during_frames"], code)

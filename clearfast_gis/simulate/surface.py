@@ -47,7 +47,7 @@ MARKER_PLATES = {"hot": (0.05, 0.95, "marker_hot"), "cold": (0.15, 0.07, "marker
 #: lateral smoothing of the composited class temperatures, metres (Gaussian sigma)
 LATERAL_SIGMA_M = 0.01
 #: the moisture field's end-members lie this far (degree of saturation) around the site's
-MOISTURE_SPREAD = 0.25
+MOISTURE_SPREAD = 0.1
 
 
 @dataclass(frozen=True)

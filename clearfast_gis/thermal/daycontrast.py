@@ -2,8 +2,9 @@
 
 The thermal model of the site (the weather log's forcing, the soil fitted to the
 thermocouples and the background) is run for a reference mine, a 10.4 cm x 8 cm TNT
-cylinder (the M2A4 AP mine), at a few depths. Its peak contrast over the survey's scans,
-against the scene's noise, says down to which depth a buried mine could show on that day: a
+cylinder (the M2A4 AP mine), at a few depths. Its contrast over the survey's scans, against
+the scene's noise (3 sigma in at least a quarter of the scans, as the detector votes), says
+down to which depth a buried mine could show on that day: a
 clear day in sand gives kelvins at 1 cm, an overcast day after rain a few tenths or less.
 The sun is compared with the clear sky of the site and date (clear-sky index).
 """
@@ -24,8 +25,10 @@ REFERENCE_RADIUS_M = 0.052
 REFERENCE_HEIGHT_M = 0.08
 #: Depths at which the day's contrast is stated, m.
 REFERENCE_DEPTHS_M = (0.0, 0.01, 0.02, 0.03, 0.05, 0.08, 0.10)
-#: A contrast shows when it exceeds this many noise sigmas (the inversion's weak-contrast bar).
+#: A contrast shows when it exceeds this many noise sigmas (the inversion's weak-contrast bar)
 SHOW_SNR = 3.0
+#: ... in at least this share of the scans (the detector's default voting level).
+SHOW_SCAN_SHARE = 0.25
 
 
 @dataclass(frozen=True)
@@ -38,6 +41,8 @@ class DayContrast:
         Depths of the reference mine, m.
     peak_contrast_k : ndarray, shape (D,)
         Peak |contrast| over the scans (centre minus background), K.
+    showing_share : ndarray, shape (D,)
+        Share of the scans whose |contrast| reaches ``SHOW_SNR`` noise sigmas.
     noise_k : float
         1-sigma noise of a measured contrast, K.
     clear_sky_index : float
@@ -49,15 +54,16 @@ class DayContrast:
 
     depths_m: np.ndarray
     peak_contrast_k: np.ndarray
+    showing_share: np.ndarray
     noise_k: float
     clear_sky_index: float
     rain_mm: float
 
     @property
     def deepest_showing_m(self) -> float:
-        """Deepest reference depth whose contrast exceeds ``SHOW_SNR`` noise sigmas, m; NaN
-        when even the shallowest does not."""
-        shows = self.peak_contrast_k >= SHOW_SNR * self.noise_k
+        """Deepest reference depth whose contrast reaches ``SHOW_SNR`` noise sigmas in at
+        least ``SHOW_SCAN_SHARE`` of the scans, m; NaN when even the shallowest does not."""
+        shows = self.showing_share >= SHOW_SCAN_SHARE - 1e-9
         return float(self.depths_m[shows].max()) if shows.any() else float("nan")
 
     def contrast_at(self, depth_m: float) -> float:
@@ -69,6 +75,7 @@ class DayContrast:
         return {"reference": "TNT cylinder 10.4 cm x 8 cm (AP mine)",
                 "depths_m": [float(d) for d in self.depths_m],
                 "peak_contrast_k": [round(float(c), 4) for c in self.peak_contrast_k],
+                "showing_share": [round(float(c), 3) for c in self.showing_share],
                 "noise_k": round(float(self.noise_k), 4),
                 "deepest_showing_m": None if not np.isfinite(self.deepest_showing_m)
                 else float(self.deepest_showing_m),
@@ -107,25 +114,31 @@ def day_contrast(forcing: Forcing, soil: Soil, scan_time_s: np.ndarray, noise_k:
         Site.
     """
     model = ObjectModel(soil, forcing, scan_time_s, REFERENCE_RADIUS_M)
-    peaks = []
+    peaks, shares = [], []
     for d in depths_m:
         obj = BuriedObject(REFERENCE_RADIUS_M, REFERENCE_HEIGHT_M, d, MATERIALS["tnt"])
-        c = model.surface_at(obj, [0.0])[:, 0] - model.background_k
-        peaks.append(float(np.max(np.abs(c))))
+        c = np.abs(model.surface_at(obj, [0.0])[:, 0] - model.background_k)
+        peaks.append(float(np.max(c)))
+        shares.append(float(np.mean(c >= SHOW_SNR * noise_k)))
     dt_h = np.diff(forcing.time_s, prepend=forcing.time_s[0]) / 3600.0
     rain = float(np.sum(forcing.rain_mm_h * dt_h))
-    return DayContrast(np.asarray(depths_m, float), np.asarray(peaks), float(noise_k),
+    return DayContrast(np.asarray(depths_m, float), np.asarray(peaks), np.asarray(shares),
+                       float(noise_k),
                        clear_sky_index(forcing, lat_deg, lon_deg), rain)
 
 
-def contrast_noise_k(inversions: dict, survey=None) -> float:
-    """1-sigma noise of a measured contrast, K: the median residual rms of the anomalies'
-    fits (registration and seams included), else the camera's NETD from ``survey.json``,
-    else 0.05 K."""
+def contrast_noise_k(inversions: dict, survey=None, clutter_k: float = float("nan")) -> float:
+    """1-sigma noise of a measured contrast, K: the larger of the median residual rms of the
+    anomalies' fits (registration and seams included) and the background clutter of the
+    mosaics (``clutter_k``, :func:`clearfast_gis.detection.clutter.background_clutter_k`);
+    without either, the camera's NETD from ``survey.json``, else 0.05 K."""
     rms = [inv.residual_rms_k for inv in inversions.values()
            if np.isfinite(inv.residual_rms_k)]
-    if rms:
-        return float(np.median(rms))
+    found = [float(np.median(rms))] if rms else []
+    if np.isfinite(clutter_k):
+        found.append(float(clutter_k))
+    if found:
+        return max(found)
     if survey is not None:
         netd = survey.manifest.get("camera", {}).get("netd_k")
         if isinstance(netd, int | float) and netd > 0:

@@ -31,7 +31,14 @@ def test_clear_day_shows_deeper_than_an_overcast_one(forcing, scans):
     # (docs/thermal.md verification, 48 scans: +2.40 / +0.51 K)
     assert clear.contrast_at(0.01) == pytest.approx(2.3, abs=0.3)
     assert clear.contrast_at(0.05) == pytest.approx(0.5, abs=0.1)
-    assert clear.deepest_showing_m > dull.deepest_showing_m
+    assert np.all(clear.showing_share >= dull.showing_share)
+    assert clear.showing_share[4] > dull.showing_share[4]  # 5 cm: shown in more scans
+    noisy = day_contrast(_overcast(forcing), soil, scans, 0.15, LAT_DEG, LON_DEG)
+    assert noisy.deepest_showing_m < clear.deepest_showing_m
+    # a depth shows when its contrast reaches 3 sigma in a quarter of the scans
+    assert np.all(np.diff(clear.showing_share) <= 0)
+    shows = clear.showing_share >= 0.25
+    assert clear.deepest_showing_m == pytest.approx(clear.depths_m[shows].max())
     assert clear.clear_sky_index == pytest.approx(1.0, abs=1e-6)
     assert dull.clear_sky_index == pytest.approx(0.25, abs=1e-6)
     rec = dull.as_dict()
@@ -60,6 +67,9 @@ def test_contrast_noise_falls_back_to_the_camera():
             self.residual_rms_k = rms
 
     assert contrast_noise_k({1: Inv(0.1), 2: Inv(0.3), 3: Inv(0.2)}) == pytest.approx(0.2)
+    # the background clutter counts when it is the larger
+    assert contrast_noise_k({1: Inv(0.02)}, clutter_k=0.045) == pytest.approx(0.045)
+    assert contrast_noise_k({1: Inv(0.05)}, clutter_k=0.045) == pytest.approx(0.05)
 
     class Survey:
         manifest = {"camera": {"netd_k": 0.08}}
