@@ -16,8 +16,8 @@ is simulated, processed with the default options, and scored against its truth:
   report warned of low contrast.
 
 The real-weather condition forces the twin with a real station record (a CR1000 ClimaVUE50
-table, Svalbard, July 2024, from ``../shared/data/real-field-files/toa5``; its columns are
-mapped explicitly to the toolkit's TOA5 names below; not copied into the repository).
+table, Svalbard, July 2024, from ``../shared/data/real-field-files/toa5``, read by Campbell's
+standard names; not copied into the repository).
 
     python benchmarks/conditions.py [--preset demo] [--seeds 0 1] [--only clear overcast]
 
@@ -43,10 +43,6 @@ from clearfast_gis.simulate import parse_scenario, preset, simulate_survey
 ROOT = Path(__file__).resolve().parents[1]
 REAL_TOA5 = (ROOT.parent / "shared" / "data" / "real-field-files" / "toa5"
              / "LouisPauchet__data_SN6134_ClimatVUE_ClimatVIEW_1h.dat")
-#: the real table's columns -> the toolkit's TOA5 columns (explicit, by name)
-REAL_COLUMNS = {"AirT_C_Avg": "AirTC_Avg", "RH": "RH_Avg", "BP_mbar_Avg": "BP_hPa_Avg",
-                "WS_ms_S_WVT": "WS_ms_Avg", "SlrFD_W_Avg": "SlrW_Avg",
-                "Rain_mm_Tot": "Rain_mm_Tot"}
 REAL_DAY = "2024-07-22T00:00:00Z"
 
 NICOSIA = {"latitude_deg": 35.17, "longitude_deg": 33.36, "epsg": 32636}
@@ -80,7 +76,7 @@ CONDITIONS: dict[str, dict] = {
         "weather": {"air_temp_c": [7, 27], "rh_pct": [20, 45]},
         "soil": {"type": "sand", "moisture": 0.1}},
     "real weather (Svalbard, 22 Jul 2024)": {
-        "site": SVALBARD, "start_utc": REAL_DAY, "weather": {"file": "real.dat"},
+        "site": SVALBARD, "start_utc": REAL_DAY, "weather": {"file": str(REAL_TOA5)},
         "soil": {"type": "gravel", "moisture": 0.3}},
     "loam": {"soil": {"type": "loam", "moisture": 0.35}},
     "clear, sand evaporating": {"soil": {"type": "sand", "moisture": 0.3}},
@@ -94,32 +90,6 @@ CONDITIONS: dict[str, dict] = {
                                                                [24, 0.5]]}},
     "windy, gusts": {"weather": {"wind_scale": 2.5, "gusts": 0.3}},
 }
-
-
-def real_weather_table(out: Path) -> Path:
-    """The real station table rewritten with the toolkit's column names (values unchanged)."""
-    lines = REAL_TOA5.read_text(encoding="utf-8").splitlines()
-    names = [c.strip('"') for c in lines[1].split(",")]
-    keep = [i for i, n in enumerate(names) if n in ("TIMESTAMP", "RECORD") or n in REAL_COLUMNS]
-
-    def pick(line: str, rename: bool = False) -> str:
-        cells = line.split(",")
-        picked = [cells[i] for i in keep]
-        if rename:
-            picked = [f'"{REAL_COLUMNS.get(c.strip(chr(34)), c.strip(chr(34)))}"'
-                      for c in picked]
-        return ",".join(picked)
-
-    body = [lines[0], pick(lines[1], True), pick(lines[2]), pick(lines[3])]
-    seen = set()
-    for line in lines[4:]:
-        stamp = line.split(",", 1)[0]
-        if stamp in seen:
-            continue  # the table repeats its last record
-        seen.add(stamp)
-        body.append(pick(line))
-    out.write_text("\r\n".join(body) + "\r\n", encoding="utf-8")
-    return out
 
 
 def score(survey: Path, products: Path) -> dict:
@@ -163,11 +133,7 @@ def main() -> None:
         for seed in args.seeds:
             base = work / f"{args.preset}-{slug}-s{seed}"
             base.mkdir(parents=True, exist_ok=True)
-            path = None
-            if doc.get("weather", {}).get("file") == "real.dat":
-                real_weather_table(base / "real.dat")
-                path = base / "scenario.json"
-            cfg = parse_scenario(doc, path, preset(args.preset)).config
+            cfg = parse_scenario(doc, None, preset(args.preset)).config
             survey, products = base / "survey", base / "products"
             t0 = time.perf_counter()
             if not (survey / "survey.json").exists():

@@ -14,8 +14,9 @@ and that its weather station logs:
 - wind: the clear day's course times ``wind_scale``, with gusts (a 1-minute AR(1) series of
   relative standard deviation ``gusts`` and a 5-minute correlation time, from the seed's
   ``gusts`` stream);
-- a measured record (``file``): the toolkit's own TOA5 table, read as the chain reads
-  ``weather.dat`` (:func:`forcing_from_weather`); it must cover the survey.
+- a measured record (``file``): a station's TOA5 table, read as the chain reads
+  ``weather.dat`` (:func:`read_station_table`, :func:`forcing_from_weather`); it must cover
+  the survey.
 """
 
 from __future__ import annotations
@@ -101,22 +102,21 @@ def site_forcing(config: SimConfig, start_s: float, rng: np.random.Generator) ->
 
 
 def measured_forcing(file: str, start_s: float, duration_s: float) -> Forcing:
-    """Forcing from a measured weather table (the toolkit's TOA5) covering the survey.
+    """Forcing from a measured weather table (TOA5) covering the survey.
 
-    The station-profile reader of other loggers' tables plugs in here: anything that gives a
-    ``WeatherLog`` (arrays ``time_s``, ``air_temp_c``, ``rh_pct``, ``wind_ms``,
-    ``solar_wm2``, optional ``sky_lw_wm2``, ``rain_mm``).
+    Read as the chain reads a station's table
+    (:func:`clearfast_gis.survey.stations.read_station_table`: columns by Campbell's standard
+    names, units converted); a station profile for other column names plugs in here.
 
     Raises
     ------
     InvalidInput
         The file cannot be read, or does not cover the survey (within 10 minutes).
     """
-    from clearfast_gis.survey.toa5 import read_toa5
+    from clearfast_gis.survey.stations import read_station_table
 
     path = Path(file)
-    log = read_toa5(path)
-    forcing = forcing_from_weather(log)
+    forcing = forcing_from_weather(read_station_table(path).weather)
     if forcing.time_s[0] > start_s + 600 or forcing.time_s[-1] < start_s + duration_s - 600:
         raise InvalidInput("the weather record does not cover the survey period", path,
                            "TIMESTAMP")
