@@ -140,7 +140,7 @@ def main() -> None:
                 simulate_survey(survey, cfg, seed=seed)
             t_sim = time.perf_counter() - t0
             t0 = time.perf_counter()
-            process_survey(survey, products, ProcessOptions(), redo_anomalies=True)
+            process_survey(survey, products, ProcessOptions(), from_stage="detection")
             t_proc = time.perf_counter() - t0
             r = score(survey, products)
             s, day = r["score"], r["day"] or {}
