@@ -203,6 +203,9 @@ def write_anomaly_products(products: Path, ctx, survey, anomalies, records: list
             f"RTK-DGPS not fixed (quality != 4) for {100 * (1 - fixq['rtk_fixed_share']):.1f} "
             "% of the frames: positions there are degraded")
     warnings.extend(anomalies.notes)
+    day_fact = day_contrast_text(anomalies.day)
+    if anomalies.day is not None and weak_day(anomalies.day):
+        warnings.append(f"low thermal contrast: {day_fact}")
     facts = [
         ("frames", str(len(survey.frames))), ("scans", str(stack.shape[0])),
         ("positions per scan", str(len(survey.positions))),
@@ -217,6 +220,7 @@ def write_anomaly_products(products: Path, ctx, survey, anomalies, records: list
         ("soil diffusivity (thermocouples)",
          f"{anomalies.soil_alpha_m2s:.2e} ± {anomalies.soil_alpha_sigma_m2s:.1e} m²/s"
          if math.isfinite(anomalies.soil_alpha_m2s) else "n/a"),
+        ("thermal contrast of the day (model of the logged weather, 10 cm AP mine)", day_fact),
     ]
     data = ReportData(survey.manifest["survey_id"], survey.manifest["site"].get("name", ""),
                       epsg, float(times_s.min()), float(times_s.max()), records, overview,
@@ -227,9 +231,31 @@ def write_anomaly_products(products: Path, ctx, survey, anomalies, records: list
     manifest["warnings"] = warnings  # input problems processed through (gaps, missing frames)
     manifest["markers"] = {"found": len(anomalies.markers),
                            "rms_offset_m": _marker_rms_m(anomalies.markers)}
+    if anomalies.day is not None:
+        manifest["day_contrast"] = anomalies.day.as_dict()
     manifest["products"] = {"anomalies": "anomalies.gpkg", "report": "report.html",
                             "mosaics": "mosaics/", "footprint": "footprint.geojson"}
     return manifest
+
+
+def weak_day(day) -> bool:
+    """True when a mine 5 cm deep would not show on the day (contrast < 3 noise sigmas)."""
+    return not (day.deepest_showing_m >= 0.05)
+
+
+def day_contrast_text(day) -> str:
+    """One line on the day's contrast for the report (``n/a`` without characterisation)."""
+    if day is None:
+        return "n/a (not characterised)"
+    peaks = ", ".join(f"{day.contrast_at(d):.2f} K at {100 * d:.0f} cm" for d in (0.01, 0.05, 0.10))
+    deep = day.deepest_showing_m
+    shows = (f"mines show down to about {100 * deep:.0f} cm" if math.isfinite(deep)
+             else "not even a mine at 1 cm shows")
+    sky = ("" if not math.isfinite(day.clear_sky_index)
+           else f"; sun {100 * day.clear_sky_index:.0f} % of a clear sky")
+    rain = f"; rain {day.rain_mm:.1f} mm" if day.rain_mm > 0 else ""
+    return (f"peak {peaks} against a noise of {day.noise_k:.2f} K: {shows} "
+            f"(3 noise sigmas in a quarter of the scans){sky}{rain}")
 
 
 def base_manifest(survey, epsg: int, options, scan_records: dict[int, dict], fixq: dict
