@@ -16,11 +16,9 @@ from clearfast_gis.progress import NULL_PROGRESS, Progress
 from clearfast_gis.thermal import (
     Inversion,
     build_site_table,
-    fit_soil_diffusivity,
-    fit_surface_parameters,
-    get_soil,
     invert_anomaly,
 )
+from clearfast_gis.thermal.error_budget import with_chain_errors
 from clearfast_gis.thermal.forcing import Forcing
 from clearfast_gis.timeutil import format_utc
 from clearfast_gis.units import ZERO_CELSIUS_K
@@ -278,25 +276,6 @@ def _band0(series: np.ndarray) -> np.ndarray:
     return s[:, 0] if s.ndim == 2 else s
 
 
-def site_soil(soil_log, forcing: Forcing, times_s: np.ndarray, background_c: np.ndarray):
-    """The site's soil: diffusivity from the thermocouples, surface terms from the background.
-
-    Returns
-    -------
-    soil : Soil
-    alpha_m2s, sigma_m2s : float
-        Fitted soil diffusivity and its 1-sigma uncertainty.
-    """
-    alpha, sigma = fit_soil_diffusivity(soil_log)
-    base = get_soil("moist_sand" if alpha > 4e-7 else "dry_sand")
-    soil = dataclasses.replace(base, k_wmk=alpha * base.rho_c_jm3k)
-    ok = np.isfinite(background_c)
-    if ok.sum() >= 4:
-        soil, _ = fit_surface_parameters(soil, forcing, times_s[ok],
-                                         background_c[ok] + ZERO_CELSIUS_K)
-    return soil, alpha, sigma
-
-
 def radius_nodes(radii_m: np.ndarray, max_nodes: int = 3) -> np.ndarray:
     """A few object radii (m) spanning the anomalies', for the site table."""
     r = np.clip(np.asarray(radii_m, dtype=float), 0.02, 0.25)
@@ -323,8 +302,10 @@ def characterise(features: list[AnomalyFeatures], times_s: np.ndarray, forcing: 
     Returns
     -------
     dict[int, Inversion]
-        Anomalies seen in fewer than 4 scans (with their background ring) are left out: their
-        status is ``not_characterised``.
+        With the chain's error terms in the sigmas
+        (:func:`clearfast_gis.thermal.error_budget.with_chain_errors`). Anomalies seen in
+        fewer than 4 scans (with their background ring) are left out: their status is
+        ``not_characterised``.
     """
     if not features:
         return {}
@@ -340,7 +321,8 @@ def characterise(features: list[AnomalyFeatures], times_s: np.ndarray, forcing: 
         ring = _band0(f.ring_k) + ZERO_CELSIUS_K
         r_tab = float(np.clip(r, nodes.min(), nodes.max()))
         if (np.isfinite(centre) & np.isfinite(ring)).sum() >= 4:
-            out[f.id] = invert_anomaly(times_s, centre, ring, forcing, soil, r_tab, table=table)
+            out[f.id] = with_chain_errors(invert_anomaly(times_s, centre, ring, forcing, soil,
+                                                         r_tab, table=table))
         progress.advance()
     progress.close()
     return out

@@ -34,7 +34,6 @@ from clearfast_gis.pipeline.anomalies import (
     characterise,
     detect_on_mosaics,
     markers_in_mosaics,
-    site_soil,
     split_markers,
     suspect_records,
 )
@@ -58,6 +57,7 @@ from clearfast_gis.pipeline.state import RunState
 from clearfast_gis.progress import NULL_PROGRESS, Progress
 from clearfast_gis.radiometry.stage import calibration_events, weather_at
 from clearfast_gis.registration import ConformalTransform, estimate_band_offsets
+from clearfast_gis.thermal.site import site_soil
 from clearfast_gis.timeutil import format_utc
 
 STATE_DIR = ".clearfast"
