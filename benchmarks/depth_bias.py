@@ -18,9 +18,9 @@ import argparse
 
 import numpy as np
 import rasterio
+from clearfast_gis.pipeline.truth import read_truth_objects
 
 from clearfast_gis.pipeline.run import open_context
-from clearfast_gis.pipeline.truth import read_truth_objects
 from clearfast_gis.survey import read_soil_log
 from clearfast_gis.thermal import (
     build_site_table,
@@ -28,7 +28,7 @@ from clearfast_gis.thermal import (
     forcing_from_weather,
     invert_anomaly,
 )
-from clearfast_gis.thermal.site import site_soil
+from clearfast_gis.thermal.sitesoil import site_soil
 from clearfast_gis.units import ZERO_CELSIUS_K
 
 RINGS = {"ring 1.5-2.5 r": (1.5, 2.5, 0.0), "ring beyond halo": (1.0, 1.0, 0.25)}

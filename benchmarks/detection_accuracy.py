@@ -6,7 +6,7 @@ surface-laid or buried <= 5 cm, false alarms (suspects cued as mines that match 
 m2 of footprint, centre error, diameter error, depth error of characterised mines; the scans'
 residual misregistration against the reference scan as the chain measured it on the mosaics
 (``products.json``) and as the placement errors against the true poses make it
-(:func:`~clearfast_gis.pipeline.truth.placement_errors`). With
+(:func:`~clearfast_gis.evaluation.truth.placement_errors`). With
 ``--sweep`` it also re-runs the detector over a small grid of (epsilon, level) on the same
 mosaics (without the thermal characterisation) to show the trade-off.
 
@@ -25,8 +25,8 @@ from pathlib import Path
 
 import numpy as np
 
+from clearfast_gis.evaluation.truth import placement_errors, score_against_truth
 from clearfast_gis.pipeline import ProcessOptions, process_survey, redetect
-from clearfast_gis.pipeline.truth import placement_errors, score_against_truth
 from clearfast_gis.simulate import preset, simulate_survey
 
 

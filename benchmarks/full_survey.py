@@ -121,7 +121,7 @@ def compare_anomalies(a: Path, b: Path, tol_m: float = 0.03) -> str:
 
 def score_line(survey: Path, products: Path) -> str:
     """Detection scores against the simulated truth."""
-    from clearfast_gis.pipeline.truth import score_against_truth
+    from clearfast_gis.evaluation.truth import score_against_truth
 
     s = score_against_truth(survey, products)
     centre = float(np.sqrt(np.mean(np.square(s.centre_errors_m)))) if s.centre_errors_m \

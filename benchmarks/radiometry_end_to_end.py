@@ -22,7 +22,7 @@ import numpy as np
 import rasterio
 from scipy.ndimage import map_coordinates
 
-from clearfast_gis.pipeline.truth import read_true_poses
+from clearfast_gis.evaluation.truth import read_true_poses
 from clearfast_gis.radiometry.stage import (
     apparent_temperature_frames,
     band_table,

@@ -6,7 +6,7 @@ For a processed simulated survey, and for each scan asked for:
   (``products.json``, mutual information between the two mosaics);
 - ``from true poses``: the misregistration against the reference that the chain's placement
   makes, traced cell by cell through each cell's source frame to ``truth/poses.csv``
-  (:func:`clearfast_gis.pipeline.truth.placement_errors`): all of it (RMS over the cells), and
+  (:func:`clearfast_gis.evaluation.truth.placement_errors`): all of it (RMS over the cells), and
   its rotation-and-shift part (what ``measured`` estimates);
 - ``floor``: the same measurement as ``measured``, between the scan's and the reference's
   mosaics both projected with the *true* poses (band 0, no co-registration): what the
@@ -27,12 +27,12 @@ from pathlib import Path
 
 import numpy as np
 
+from clearfast_gis.evaluation.truth import placement_errors, read_true_poses
 from clearfast_gis.export.cog import read_mosaic
 from clearfast_gis.geometry.grid import GroundGrid
 from clearfast_gis.mosaic import FrameInput, build_scan_mosaic, temporal_residual
 from clearfast_gis.pipeline.frames import scan_frames
 from clearfast_gis.pipeline.run import _air_function, mosaic_rel, open_context
-from clearfast_gis.pipeline.truth import placement_errors, read_true_poses
 
 
 def true_pose_mosaic(ctx, scan: int, grid: GroundGrid, truth: dict) -> np.ndarray:

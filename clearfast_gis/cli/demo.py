@@ -17,8 +17,8 @@ def command(out, seed, progress_mode):
     """Simulate the built-in demo survey (a clear November day near Nicosia, AT and AP mines
     among clutter) into OUT/survey, process it into OUT/products and compare the suspects
     with the simulation's ground truth."""
+    from clearfast_gis.evaluation.truth import score_against_truth
     from clearfast_gis.pipeline import ProcessOptions, process_survey
-    from clearfast_gis.pipeline.truth import score_against_truth
     from clearfast_gis.simulate import preset, simulate_survey
 
     out = Path(out)

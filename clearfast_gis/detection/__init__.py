@@ -7,7 +7,6 @@ from clearfast_gis.detection.features import (
     AnomalyFeatures,
     blob_features,
     features_table,
-    local_solar_hour,
     summary_polarity,
 )
 from clearfast_gis.detection.morphology import (
@@ -39,7 +38,7 @@ __all__ = [
     "binary_opening_by_reconstruction",
     "binary_reconstruction", "blob_features", "bottom_hat_by_reconstruction", "classify",
     "detect_anomalies", "detect_snapshot", "dilate_disk", "diffusivity_cue", "disk_footprint",
-    "erode_disk", "features_table", "local_solar_hour", "reconstruction",
+    "erode_disk", "features_table", "reconstruction",
     "reconstruction_by_dilation", "reconstruction_by_erosion",
     "summary_polarity", "top_hat_by_reconstruction",
 ]

@@ -42,42 +42,14 @@ import numpy as np
 from skimage.measure import regionprops
 
 from clearfast_gis.detection.detector import DetectionResult, as_image_stack
-from clearfast_gis.thermal.solar import sun_times
+from clearfast_gis.solar import local_solar_hour
 
-__all__ = ["AnomalyFeatures", "blob_features", "features_table", "local_solar_hour",
-           "summary_polarity"]
+__all__ = ["AnomalyFeatures", "blob_features", "features_table", "summary_polarity"]
 
+# Apparent solar time, day [9, 17) h and night [20, 6) h: the scans whose sign sets the
+# diurnal behaviour of a blob (wide windows, so that most scans vote).
 DAY_HOURS = (9.0, 17.0)
 NIGHT_HOURS = (20.0, 6.0)
-
-
-def local_solar_hour(time_s: np.ndarray | float, longitude_deg: float,
-                     latitude_deg: float = 0.0) -> np.ndarray:
-    """Local apparent solar time in hours [0, 24) (12 = solar noon).
-
-    Derived from the solar noon of :func:`clearfast_gis.thermal.solar.sun_times` (the one sun
-    model of the package): ``12 + (t - noon) / 3600`` wrapped to [0, 24), with the noon of the
-    UTC day containing ``t``.
-
-    Parameters
-    ----------
-    time_s : array_like, shape (N,) or scalar
-        UTC epoch seconds.
-    longitude_deg : float
-        Longitude, degrees east positive.
-    latitude_deg : float
-        Latitude, degrees (does not change the solar noon; passed through to ``sun_times``).
-
-    Returns
-    -------
-    ndarray, same shape as ``time_s``, hours.
-    """
-    t = np.asarray(time_s, dtype=np.float64)
-    days = np.floor(t / 86400.0)
-    noon = np.empty_like(t)
-    for day in np.unique(days):
-        noon[days == day] = sun_times(latitude_deg, longitude_deg, float(day) * 86400.0)[1]
-    return np.mod(12.0 + (t - noon) / 3600.0, 24.0)
 
 
 @dataclass

@@ -4,21 +4,23 @@ from __future__ import annotations
 
 import numpy as np
 
-from clearfast_gis.mosaic import temporal_transform
-from clearfast_gis.mosaic.adjust import LinearTie, adjust_attitudes, attitude_at
-from clearfast_gis.parallel import thread_map
-from clearfast_gis.pipeline.attitude import frame_windows, mosaic_ties
+from clearfast_gis.attitude.adjust import adjust_attitudes, attitude_at
+from clearfast_gis.attitude.neighbours import neighbour_ties
+from clearfast_gis.attitude.ties import LinearTie
 from clearfast_gis.progress import Progress
 
 ADJUST_MIN_DEG = 0.01
 """A scan is projected again when the adjustment changes the attitude of one of its frames by
 more than this, degrees (0.01 deg moves the ground by 0.35 cm at 20 m range)."""
 
+
 UNIT = "attitude_adjustment"
 """Run-state unit of the adjustment."""
 
+
 REFINED_UNIT = "attitude_adjustment_refined"
 """Run-state unit of the refined adjustment (ties between neighbouring adjusted scans)."""
+
 
 REFINE_MIN_SHARE = 0.25
 """The refined adjustment runs (by default) when the first one re-projects at least this share
@@ -26,9 +28,6 @@ of the scans: the platform moved during the survey (the trial's sinking lift), t
 fits were chained through weak ties and the neighbour ties pay off. When the first adjustment
 leaves (almost) every scan in place, the per-scan fits already agree and a second pass,
 which measures about as many ties again as the whole mosaic stage, would only cost time."""
-
-NEIGHBOUR_OFFSETS = (-2, -1, 1, 2)
-"""Scans tied to each scan in the refined adjustment, as steps in time order."""
 
 
 def placement_attitude(rec: dict, model: tuple[np.ndarray, np.ndarray] | None,
@@ -71,88 +70,6 @@ def stored_model(state) -> tuple[np.ndarray, np.ndarray] | None:
         return None
     return np.array(unit["node_times_s"], dtype=float), np.array(unit["nodes_rpy_deg"],
                                                                    dtype=float)
-
-
-def neighbour_pairs(order: list[int], offsets: tuple[int, ...] = NEIGHBOUR_OFFSETS
-                    ) -> list[tuple[int, int]]:
-    """(scan, neighbour) pairs to tie: each scan with the scans ``offsets`` away in time order.
-
-    Parameters
-    ----------
-    order : list of int
-        Scans in time order.
-    offsets : tuple of int
-        Steps along ``order`` (e.g. -1: the previous scan).
-    """
-    return [(s, order[k + o]) for k, s in enumerate(order) for o in offsets
-            if 0 <= k + o < len(order)]
-
-
-def neighbour_ties(job, order: list[int], scan_records: dict[int, dict],
-                   model: tuple[np.ndarray, np.ndarray] | None,
-                   offsets: tuple[int, ...] = NEIGHBOUR_OFFSETS,
-                   progress: Progress | None = None,
-                   reference_scan: int | None = None) -> list[LinearTie]:
-    """Ties of every scan to its neighbours in time, measured on the placed mosaics; and to
-    the reference scan, from the registration of the two whole mosaics.
-
-    Neighbours are close in time and alike, so a frame's window registers well against them;
-    but a chain of neighbours drifts over the hours between a night scan and the noon
-    reference. Against the reference each scan's whole mosaic is registered at once
-    (:func:`clearfast_gis.mosaic.temporal_transform`, as the residual is measured), which stays
-    precise across the day/night contrast inversion where a single window does not.
-
-    Parameters
-    ----------
-    job : the pipeline's scan job (``reference``, ``ctx``, ``grid``, ``options``)
-    order : list of int
-        Scans in time order.
-    scan_records : dict
-        Per-scan run-state records (how each mosaic was placed).
-    model : (node_times_s (S,), nodes_rpy_deg (S, 3)) or None
-        The attitude the adjusted scans were placed with.
-    offsets : tuple of int
-        Neighbours tied, as steps along ``order``.
-    progress : Progress, optional
-    reference_scan : int, optional
-        The scan the temporal mosaics are co-registered to; None: no ties to it beyond the
-        neighbours'.
-
-    Returns
-    -------
-    list of LinearTie
-    """
-    reach = max(abs(o) for o in offsets)
-    reference = None if reference_scan is None else \
-        job.reference(reference_scan, scan_records[reference_scan], model)
-    n_samples = job.options.attitude_samples
-    loaded: dict[int, object] = {}
-    ties: list[LinearTie] = []
-    pairs = neighbour_pairs(order, offsets)
-    if progress is not None:
-        progress.start("attitude ties between neighbouring scans", len(order))
-    for k, s in enumerate(order):
-        keep = set(order[max(0, k - reach):k + reach + 1])
-        loaded = {n: m for n, m in loaded.items() if n in keep}
-        for n in keep - set(loaded):
-            loaded[n] = reference if n == reference_scan else \
-                job.reference(n, scan_records[n], model)
-        others = [n for m, n in pairs if m == s]
-        windows = frame_windows(loaded[s].source, n_samples)  # shared by the neighbours
-        for found in thread_map(lambda other, here=loaded[s], near=loaded, w=windows:
-                                mosaic_ties(here, near[other], job.ctx.camera, job.grid,
-                                            n_samples=n_samples, windows=w), others):
-            ties += found
-        if reference is not None and s != reference_scan:
-            whole = temporal_transform(reference.values[0], loaded[s].values[0])
-            if whole.converged:
-                ties += mosaic_ties(loaded[s], reference, job.ctx.camera, job.grid,
-                                    n_samples=n_samples, windows=windows, transform=whole)
-        if progress is not None:
-            progress.advance(1, scan=s)
-    if progress is not None:
-        progress.close()
-    return ties
 
 
 def _fit(ties: list[LinearTie], order: list[int], node_times: np.ndarray, prior: np.ndarray,

@@ -32,7 +32,7 @@ class ProcessOptions:
         Frames per scan measured against each reference for the attitude fit.
     adjust_attitude : bool
         After every scan has its own attitude, adjust the attitudes of all scans at once
-        (:mod:`clearfast_gis.mosaic.adjust`): a smooth attitude over time, pinned by the
+        (:mod:`clearfast_gis.attitude.adjust`): a smooth attitude over time, pinned by the
         markers of every scan and tied scan to scan by the registrations; the scans whose
         placement changes are projected again.
     frame_refine : bool

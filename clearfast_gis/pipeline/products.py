@@ -8,6 +8,7 @@ from pathlib import Path
 import numpy as np
 
 from clearfast_gis import __version__
+from clearfast_gis.solar import mean_solar_hour
 from clearfast_gis.timeutil import format_utc
 
 
@@ -98,7 +99,8 @@ def _marker_fact(matches) -> str:
 
 
 def _pick_day_night(times_s: np.ndarray, lon_deg: float) -> tuple[int, int]:
-    hour = (times_s / 3600.0 + lon_deg / 15.0) % 24.0
+    """The scans nearest 13 h and 3 h mean solar time (the report's day and night maps)."""
+    hour = mean_solar_hour(times_s, lon_deg)
     day = int(np.argmin(np.abs(hour - 13.0)))
     night = int(np.argmin(np.minimum(np.abs(hour - 3.0), 24 - np.abs(hour - 3.0))))
     return day, night

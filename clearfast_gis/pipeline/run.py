@@ -13,12 +13,16 @@ import numpy as np
 
 from clearfast_gis import __version__, kernels
 from clearfast_gis.atomic import atomic_path
+from clearfast_gis.attitude import ReferenceMosaic, reposed, reposed_in_time, scan_attitude
+from clearfast_gis.detection.markers import markers_in_mosaics, split_markers
+from clearfast_gis.detection.voting import detect_on_mosaics
 from clearfast_gis.errors import InvalidInput
 from clearfast_gis.export.cog import band_description, read_mosaic, write_cog
 from clearfast_gis.export.manifest import (
     read_products_manifest,
     write_products_manifest,
 )
+from clearfast_gis.export.records import suspect_records
 from clearfast_gis.geometry.gnss import platform_track, smooth_static_track, utm_epsg_for
 from clearfast_gis.geometry.projection import frame_footprint
 from clearfast_gis.mosaic import build_scan_mosaic, mosaic_grid, temporal_residual
@@ -29,20 +33,7 @@ from clearfast_gis.pipeline.adjustment import (
     placement_attitude,
     stored_model,
 )
-from clearfast_gis.pipeline.anomalies import (
-    AnomalySet,
-    characterise,
-    detect_on_mosaics,
-    markers_in_mosaics,
-    split_markers,
-    suspect_records,
-)
-from clearfast_gis.pipeline.attitude import (
-    ReferenceMosaic,
-    reposed,
-    reposed_in_time,
-    scan_attitude,
-)
+from clearfast_gis.pipeline.anomalies import AnomalySet
 from clearfast_gis.pipeline.frames import (
     SurveyContext,
     first_scan_band_frames,
@@ -57,7 +48,7 @@ from clearfast_gis.pipeline.state import RunState
 from clearfast_gis.progress import NULL_PROGRESS, Progress
 from clearfast_gis.radiometry.stage import calibration_events, weather_at
 from clearfast_gis.registration import ConformalTransform, estimate_band_offsets
-from clearfast_gis.thermal.site import site_soil
+from clearfast_gis.thermal.sitesoil import characterise, site_soil
 from clearfast_gis.timeutil import format_utc
 
 STATE_DIR = ".clearfast"

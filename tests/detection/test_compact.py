@@ -6,7 +6,7 @@ import numpy as np
 from affine import Affine
 
 from clearfast_gis.detection.compact import compact_contrast, split_oversized
-from clearfast_gis.pipeline.anomalies import detect_on_mosaics
+from clearfast_gis.detection.voting import detect_on_mosaics
 
 PIXEL_M = 0.02
 SHAPE = (200, 200)
@@ -89,7 +89,7 @@ def test_a_mine_left_out_of_most_scans_is_still_found():
         assert abs(f.diameter_px - diameter) < 0.2 * diameter + 1.0
         assert f.score > 3.0
     # with one level for the whole stack (the paper's l over all images) it is lost
-    from clearfast_gis.pipeline.anomalies import detect_on_mosaics as det
+    from clearfast_gis.detection.voting import detect_on_mosaics as det
 
     _, fixed = det(stack, times, TRANSFORM, PIXEL_M, 0.0, 0.5, 0.06, 0.01, level=12,
                    gamma=None, max_anomalies=50)

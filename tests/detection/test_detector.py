@@ -10,10 +10,10 @@ from clearfast_gis.detection import (
     blob_features,
     detect_anomalies,
     features_table,
-    local_solar_hour,
     summary_polarity,
 )
 from clearfast_gis.detection.stretch import stretch_limits, stretch_threshold
+from clearfast_gis.solar import local_solar_hour
 from clearfast_gis.thermal.solar import solar_position
 
 T0 = 1763164800.0  # 2025-11-15T00:00:00Z

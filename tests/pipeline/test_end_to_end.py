@@ -10,7 +10,7 @@ import pytest
 import rasterio
 from rasterio.warp import Resampling, reproject
 
-from clearfast_gis.pipeline.truth import read_truth_objects, score_against_truth
+from clearfast_gis.evaluation.truth import read_truth_objects, score_against_truth
 
 
 def truth_on_mosaic_grid(survey, products, scan: int):

@@ -8,7 +8,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from clearfast_gis.pipeline.truth import placement_errors, rigid_residual_px
+from clearfast_gis.evaluation.truth import placement_errors, rigid_residual_px
 
 PIXEL_M = 0.02
 

@@ -4,8 +4,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from clearfast_gis.evaluation.truth import read_true_poses
 from clearfast_gis.geometry import camera_from_manifest
-from clearfast_gis.pipeline.truth import read_true_poses
 from clearfast_gis.simulate.config import preset
 from clearfast_gis.simulate.platform import lift_motion
 from clearfast_gis.survey import read_survey

@@ -10,7 +10,7 @@ import pytest
 
 from clearfast_gis.simulate.surface import soils
 from clearfast_gis.thermal import MATERIALS, fit_surface_parameters, simulate_background
-from clearfast_gis.thermal.site import site_soil, soil_from_diffusivity
+from clearfast_gis.thermal.sitesoil import site_soil, soil_from_diffusivity
 
 from .conftest import DAY0_S
 

@@ -7,9 +7,7 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from clearfast_gis.geometry.cameras import EquiangularCamera
-from clearfast_gis.geometry.pose import CameraPose, pose_from_ptu
-from clearfast_gis.mosaic.adjust import (
+from clearfast_gis.attitude import (
     LinearTie,
     adjust_attitudes,
     attitude_at,
@@ -17,6 +15,8 @@ from clearfast_gis.mosaic.adjust import (
     interpolation_weights,
     moved_point,
 )
+from clearfast_gis.geometry.cameras import EquiangularCamera
+from clearfast_gis.geometry.pose import CameraPose, pose_from_ptu
 
 CAMERA = EquiangularCamera(320, 256, 16.0)
 POSITION = np.array([0.0, 0.0, 13.0])

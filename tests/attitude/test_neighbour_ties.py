@@ -4,18 +4,20 @@ from __future__ import annotations
 
 import numpy as np
 
+from clearfast_gis.attitude import (
+    LinearTie,
+    ReferenceMosaic,
+    adjust_attitudes,
+    displacement_jacobian,
+    frame_windows,
+    mosaic_ties,
+    moved_point,
+    neighbour_pairs,
+)
 from clearfast_gis.geometry.cameras import EquiangularCamera
 from clearfast_gis.geometry.grid import GroundGrid
 from clearfast_gis.geometry.pose import CameraPose
 from clearfast_gis.mosaic import FrameInput, build_scan_mosaic, temporal_transform
-from clearfast_gis.mosaic.adjust import (
-    LinearTie,
-    adjust_attitudes,
-    displacement_jacobian,
-    moved_point,
-)
-from clearfast_gis.pipeline.adjustment import neighbour_pairs
-from clearfast_gis.pipeline.attitude import ReferenceMosaic, frame_windows, mosaic_ties
 
 CAM = EquiangularCamera(96, 72, 18.0)
 X0, Y0 = 500_000.0, 3_890_000.0

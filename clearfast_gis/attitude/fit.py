@@ -11,37 +11,10 @@ is then projected with that attitude.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 import numpy as np
 
+from clearfast_gis.attitude.ties import GroundTie, moved_point
 from clearfast_gis.geometry.pose import CameraPose
-from clearfast_gis.mosaic.adjust import moved_point
-
-
-@dataclass(frozen=True)
-class GroundTie:
-    """A measured ground displacement of one frame.
-
-    Attributes
-    ----------
-    frame : int
-        Index into the scan's pose list.
-    x, y : float
-        Ground point (survey CRS, metres) where the frame's content was placed with the
-        current attitude.
-    dx, dy : float
-        Shift (metres) that moves that content to where it belongs.
-    weight : float
-        Relative weight (markers are surveyed: heavier than image registrations).
-    """
-
-    frame: int
-    x: float
-    y: float
-    dx: float
-    dy: float
-    weight: float = 1.0
 
 
 def _predicted(camera, poses: list[CameraPose], ties: list[GroundTie],

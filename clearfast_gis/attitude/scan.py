@@ -1,4 +1,5 @@
-"""Per-scan platform attitude from the reference scan and the surveyed markers."""
+"""Per-scan platform attitude from the reference scan and the surveyed markers: the ties of
+one scan measured (frame registrations, marker positions) and fitted."""
 
 from __future__ import annotations
 
@@ -7,21 +8,21 @@ from dataclasses import dataclass, field
 
 import numpy as np
 import shapely
-from scipy import ndimage
 
+from clearfast_gis.attitude.adjust import attitude_at
+from clearfast_gis.attitude.fit import fit_attitude
+from clearfast_gis.attitude.ties import GroundTie, LinearTie, displacement_jacobian
 from clearfast_gis.geometry.grid import GroundGrid
 from clearfast_gis.geometry.pose import CameraPose
 from clearfast_gis.geometry.projection import frame_footprint
 from clearfast_gis.mosaic import FrameInput, build_scan_mosaic, project_frame
-from clearfast_gis.mosaic.adjust import LinearTie, attitude_at, displacement_jacobian
-from clearfast_gis.mosaic.attitude import GroundTie, fit_attitude
 from clearfast_gis.mosaic.coregister import coregister_projected
 from clearfast_gis.mosaic.markers import locate_marker
 from clearfast_gis.parallel import thread_map
-from clearfast_gis.registration import ConformalTransform, register_conformal
 
 MARKER_WEIGHT = 5.0
 """Weight of a marker tie relative to an image-registration tie (markers are surveyed)."""
+
 
 TIE_SAMPLES = 12_000
 """Samples (the steepest-gradient cells) of each frame registration that ties a scan's
@@ -44,7 +45,7 @@ class AttitudeFit:
         Weighted RMS residual of the ties, metres (NaN without a fit).
     ties : tuple of LinearTie
         The ties, linearised for the survey-wide adjustment
-        (:func:`clearfast_gis.mosaic.adjust.adjust_attitudes`).
+        (:func:`clearfast_gis.attitude.adjust.adjust_attitudes`).
     """
 
     attitude_rpy_deg: tuple[float, float, float]
@@ -230,109 +231,3 @@ def scan_attitude(frames: list[FrameInput], times_s: np.ndarray, camera, grid: G
     poses = [f.pose for f in frames]
     att, rms, used = fit_attitude(camera, poses, ties, base_rpy_deg=init)
     return AttitudeFit(att, n_marker, n_image, used, rms, tuple(linear))
-
-
-def frame_windows(source: np.ndarray, n_samples: int, min_cells: int = 400
-                  ) -> list[tuple[int, tuple[slice, slice]]]:
-    """Positions to tie and the bounding window of the cells each one supplies in a mosaic.
-
-    Parameters
-    ----------
-    source : int (H, W)
-        Scan-pattern position seen in each cell (-1: none).
-    n_samples : int
-        Positions kept, spread evenly over the positions present.
-    min_cells : int
-        Positions supplying fewer cells are skipped.
-
-    Returns
-    -------
-    list of (position, (row slice, column slice))
-    """
-    positions, counts = np.unique(source[source >= 0], return_counts=True)
-    positions = positions[counts >= min_cells]
-    if positions.size == 0:
-        return []
-    pick = positions[np.unique(np.linspace(0, positions.size - 1,
-                                           min(n_samples, positions.size)).round().astype(int))]
-    boxes = ndimage.find_objects(np.where(source >= 0, source + 1, 0), int(pick.max()) + 1)
-    return [(int(p), boxes[int(p)]) for p in pick if boxes[int(p)] is not None]
-
-
-def mosaic_ties(scan: ReferenceMosaic, other: ReferenceMosaic, camera, grid: GroundGrid,
-                n_samples: int = 40, max_shift_m: float = 0.2, min_overlap: float = 0.5,
-                windows: list[tuple[int, tuple[slice, slice]]] | None = None,
-                transform: ConformalTransform | None = None) -> list[LinearTie]:
-    """Ties between two placed scans, measured mosaic against mosaic.
-
-    For a sample of ``scan``'s frames, the cells each frame supplies to ``scan``'s mosaic are
-    registered (translation only, mutual information) against ``other``'s mosaic under the
-    same window. Unlike a frame fitted against a reference, a tie is kept whenever the
-    registration converges, even at zero shift: after an adjustment most frames are already
-    in place, and keeping only those that moved would bias the sample.
-
-    Parameters
-    ----------
-    scan, other : ReferenceMosaic
-        The two scans' mosaics (degrees C, band 0 used), source maps and placements.
-    camera : camera model
-    grid : GroundGrid
-        The mosaic grid (cell size in metres).
-    n_samples : int
-        Frames of ``scan`` tied.
-    max_shift_m : float
-        Largest shift searched, metres.
-    min_overlap : float
-        Fraction of a frame's cells that ``other`` must cover.
-    windows : list, optional
-        ``frame_windows(scan.source, n_samples)``, when the caller ties ``scan`` to several
-        others (computed here otherwise).
-    transform : ConformalTransform, optional
-        The registration of the whole of ``scan``'s mosaic to ``other``'s, in mosaic pixels
-        (:func:`clearfast_gis.mosaic.temporal_transform`): when given, each sample frame's
-        shift is read from it at the frame's cells instead of registering the frame's window
-        alone (the whole mosaics hold far more texture than one window, which matters between
-        day and night).
-
-    Returns
-    -------
-    list of LinearTie
-        ``d_m`` moves ``scan``'s content onto ``other``'s; weight 1.
-    """
-    ps = grid.pixel_size
-    out: list[LinearTie] = []
-    if windows is None:
-        windows = frame_windows(scan.source, n_samples)
-    for pos, (rs, cs) in windows:
-        mask = scan.source[rs, cs] == pos
-        fixed = other.values[0][rs, cs]
-        if np.count_nonzero(mask & np.isfinite(fixed)) < min_overlap * np.count_nonzero(mask):
-            continue
-        rows, cols = np.nonzero(mask)
-        centre = np.array([cols.mean(), rows.mean()])
-        if transform is None:
-            t = register_conformal(fixed, scan.values[0][rs, cs], moving_mask=mask,
-                                   max_shift_px=max_shift_m / ps, max_angle_deg=0.0, bins=24)
-            if not t.converged:
-                continue
-            du, dv = centre - t.apply(centre[None])[0]
-        else:
-            whole = centre + (cs.start, rs.start)
-            du, dv = whole - transform.apply(whole[None])[0]
-        d = np.array([du * ps, -dv * ps])
-        xc = grid.x0 + (cs.start + centre[0] + 0.5) * ps
-        yc = grid.y0 - (rs.start + centre[1] + 0.5) * ps
-        src = other.source[rs, cs][mask]
-        src = src[src >= 0]
-        if src.size == 0:
-            continue
-        values, counts = np.unique(src, return_counts=True)
-        j = int(values[np.argmax(counts)])
-        t_scan, pose = scan.frame_at(pos)
-        t_other, pose_other = other.frame_at(j)
-        out.append(LinearTie(
-            scan.scan, float(t_scan), np.asarray(pose.attitude_rpy_deg, dtype=float),
-            displacement_jacobian(camera, pose, xc, yc), d, 1.0, other.scan, float(t_other),
-            np.asarray(pose_other.attitude_rpy_deg, dtype=float),
-            displacement_jacobian(camera, pose_other, xc + d[0], yc + d[1])))
-    return out

@@ -1,5 +1,6 @@
-"""The site's soil for the inversion: diffusivity from the thermocouples, heat capacity from
-the sand end-members, surface terms from the shallowest thermocouple.
+"""The site's soil for the inversion (diffusivity from the thermocouples, heat capacity from
+the sand end-members, surface terms from the shallowest thermocouple) and the
+characterisation of each anomaly with the thermal model on it.
 
 Why the shallowest thermocouple and not the mosaics' background: the mosaics hold *apparent*
 temperature. A sandy soil's band emissivity is 0.84-0.96 (quartz reststrahlen at 8-9.5 um)
@@ -17,10 +18,16 @@ import dataclasses
 
 import numpy as np
 
+from clearfast_gis.detection.features import AnomalyFeatures
+from clearfast_gis.progress import NULL_PROGRESS, Progress
+from clearfast_gis.thermal.error_budget import with_chain_errors
 from clearfast_gis.thermal.forcing import Forcing
+from clearfast_gis.thermal.inversion import Inversion, invert_anomaly
 from clearfast_gis.thermal.materials import MATERIALS, Soil, get_soil
 from clearfast_gis.thermal.soilfit import fit_soil_diffusivity, soil_log_field
 from clearfast_gis.thermal.surface_fit import fit_surface_parameters
+from clearfast_gis.thermal.table import build_site_table
+from clearfast_gis.units import ZERO_CELSIUS_K
 
 SURFACE_SENSOR_MAX_DEPTH_M = 0.05
 """Deepest thermocouple that still constrains the surface terms, m."""
@@ -66,8 +73,6 @@ def site_soil(soil_log, forcing: Forcing, times_s: np.ndarray, background_c: np.
     alpha_m2s, sigma_m2s : float
         Fitted soil diffusivity and its 1-sigma uncertainty.
     """
-    from clearfast_gis.units import ZERO_CELSIUS_K
-
     alpha, sigma = fit_soil_diffusivity(soil_log)
     soil = soil_from_diffusivity(alpha)
     depths = soil_log_field(soil_log, "depth_m")
@@ -88,3 +93,61 @@ def site_soil(soil_log, forcing: Forcing, times_s: np.ndarray, background_c: np.
         soil, _ = fit_surface_parameters(soil, forcing, times_s[ok],
                                          background_c[ok] + ZERO_CELSIUS_K)
     return soil, alpha, sigma
+
+
+def first_band(series: np.ndarray) -> np.ndarray:
+    """Band 0 of a per-scan series (N,) or (N, B)."""
+    s = np.asarray(series, dtype=np.float64)
+    return s[:, 0] if s.ndim == 2 else s
+
+
+def radius_nodes(radii_m: np.ndarray, max_nodes: int = 3) -> np.ndarray:
+    """A few object radii (m) spanning the anomalies', for the site table."""
+    r = np.clip(np.asarray(radii_m, dtype=float), 0.02, 0.25)
+    if r.size == 0:
+        return np.array([0.05])
+    q = np.unique(np.round(np.quantile(r, np.linspace(0, 1, max_nodes)), 2))
+    return q
+
+
+def characterise(features: list[AnomalyFeatures], times_s: np.ndarray, forcing: Forcing,
+                 soil, progress: Progress = NULL_PROGRESS) -> dict[int, Inversion]:
+    """Depth and diffusivity of each anomaly with the thermal model (one site table).
+
+    Parameters
+    ----------
+    features : list of AnomalyFeatures
+        With ``centre_k`` and ``ring_k`` series in degrees C (mosaic units).
+    times_s : float64 (N,)
+        Scan times.
+    forcing : Forcing
+    soil : Soil
+        The site's fitted soil.
+
+    Returns
+    -------
+    dict[int, Inversion]
+        With the chain's error terms in the sigmas
+        (:func:`clearfast_gis.thermal.error_budget.with_chain_errors`). Anomalies seen in
+        fewer than 4 scans (with their background ring) are left out: their status is
+        ``not_characterised``.
+    """
+    if not features:
+        return {}
+    radii = np.array([0.5 * f.diameter_m for f in features])
+    nodes = radius_nodes(radii)
+    progress.message(f"thermal model table for radii {', '.join(f'{r:.2f}' for r in nodes)} m")
+    table = build_site_table(forcing, soil, nodes if nodes.size > 1 else float(nodes[0]),
+                             times_s)
+    out: dict[int, Inversion] = {}
+    progress.start("characterise", len(features))
+    for f, r in zip(features, radii, strict=True):
+        centre = first_band(f.centre_k) + ZERO_CELSIUS_K
+        ring = first_band(f.ring_k) + ZERO_CELSIUS_K
+        r_tab = float(np.clip(r, nodes.min(), nodes.max()))
+        if (np.isfinite(centre) & np.isfinite(ring)).sum() >= 4:
+            out[f.id] = with_chain_errors(invert_anomaly(times_s, centre, ring, forcing, soil,
+                                                         r_tab, table=table))
+        progress.advance()
+    progress.close()
+    return out

@@ -1,0 +1,13 @@
+"""Scoring products against a simulated survey's ground truth (never used by the chain)."""
+
+from clearfast_gis.evaluation.truth import (
+    PlacementScore,
+    TruthScore,
+    placement_errors,
+    read_true_poses,
+    read_truth_objects,
+    score_against_truth,
+)
+
+__all__ = ["PlacementScore", "TruthScore", "placement_errors", "read_true_poses",
+           "read_truth_objects", "score_against_truth"]
