@@ -18,8 +18,8 @@ import argparse
 
 import numpy as np
 import rasterio
-from clearfast_gis.pipeline.truth import read_truth_objects
 
+from clearfast_gis.evaluation.truth import read_truth_objects
 from clearfast_gis.pipeline.run import open_context
 from clearfast_gis.survey import read_soil_log
 from clearfast_gis.thermal import (

@@ -49,7 +49,7 @@ MINE_ACTION_FIELDS: dict[str, str] = {
     "evidence": f'Always "{EVIDENCE}"',
     "land_class": f'Always "{LAND_CLASS}" (never a confirmed hazardous area)',
     "class_cue": "at_mine, ap_mine, clutter or unknown (from size and thermal diffusivity)",
-    "confidence": "Detection confidence, 0-1",
+    "cue_confidence": "Confidence of the class cue, 0-1 (not a mine likelihood)",
     "depth_m": "Estimated burial depth, metres (empty if not characterised)",
     "depth_sigma_m": "Depth uncertainty (1 sigma), metres",
     "diameter_m": "Diameter of the thermal footprint, metres",
@@ -60,7 +60,7 @@ MINE_ACTION_FIELDS: dict[str, str] = {
 """Columns of the export, in order, with their meaning."""
 
 _DECIMALS = {"latitude_deg": 8, "longitude_deg": 8, "utm_easting_m": 3, "utm_northing_m": 3,
-             "confidence": 3, "depth_m": 4, "depth_sigma_m": 4, "diameter_m": 3}
+             "cue_confidence": 3, "depth_m": 4, "depth_sigma_m": 4, "diameter_m": 3}
 
 
 @dataclass(frozen=True)
@@ -166,7 +166,7 @@ def mine_action_table(suspects, survey_id: str, survey_date_utc: str, epsg: int)
         "evidence": EVIDENCE,
         "land_class": LAND_CLASS,
         "class_cue": [str(c) for c in suspects["class_cue"]],
-        "confidence": col("confidence").astype(np.float64),
+        "cue_confidence": col("cue_confidence").astype(np.float64),
         "depth_m": col("depth_m").astype(np.float64),
         "depth_sigma_m": col("depth_sigma_m").astype(np.float64),
         "diameter_m": col("diameter_m").astype(np.float64),

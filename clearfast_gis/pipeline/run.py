@@ -14,6 +14,7 @@ import numpy as np
 from clearfast_gis import __version__, kernels
 from clearfast_gis.atomic import atomic_path
 from clearfast_gis.attitude import ReferenceMosaic, reposed, reposed_in_time, scan_attitude
+from clearfast_gis.detection.likelihood import screen_and_rank
 from clearfast_gis.detection.markers import markers_in_mosaics, split_markers
 from clearfast_gis.detection.voting import detect_on_mosaics
 from clearfast_gis.errors import InvalidInput
@@ -634,7 +635,8 @@ def _anomaly_stage(ctx, survey, products: Path, options: ProcessOptions, state: 
     anomalies = AnomalySet(labels, feats, inversions, alpha, sigma, notes, marker_matches)
     fixq = _fix_quality_summary(ctx)
     code = survey.manifest["survey_id"]
-    records = suspect_records(anomalies, times, lon, fixq["worst_during_frames"], code)
+    records = screen_and_rank(suspect_records(anomalies, times, lon, fixq["worst_during_frames"],
+                                              code), len(times))
     with meter.stage("products"):
         timings = {k: v["wall_s"] for k, v in meter.stages.items()}
         manifest = write_anomaly_products(products, ctx, survey, anomalies, records, stack,
