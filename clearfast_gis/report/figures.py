@@ -151,6 +151,8 @@ def operating_curve_png(curve: dict) -> bytes:
         ax.annotate(str(k + 1), (fa[k + 1], found[k + 1]), fontsize=6, color="#555",
                     xytext=(2, -8), textcoords="offset points")
     ax.axvline(0.01, color="grey", lw=0.6, ls="--")
+    ax.text(0.01, 0.02, " 0.01 per m²", transform=ax.get_xaxis_transform(), fontsize=7,
+            color="grey")
     ax.set_xlabel("expected false alarms per m² (cumulative)")
     ax.set_ylabel("expected mines found")
     ax.set_title("going down the list by p_mine (numbers: priority)", fontsize=9)
