@@ -223,3 +223,20 @@ def test_suspects_ranked_and_candidates_set_aside(demo_survey, demo_products):
     html = (demo_products / "report.html").read_text()
     assert "Operating curve" in html and "figures/operating_curve.png" in html
     assert (demo_products / "figures" / "operating_curve.png").is_file()
+
+
+def test_p_mine_is_calibrated_on_a_survey_it_was_not_fitted_on(demo_survey, demo_products):
+    """The demo survey (seed 0) is not among the model's ``fitted_on`` surveys: the expected
+    number of mines (sum of p_mine) agrees with the true count within 3 sigma of the
+    Poisson-binomial spread, and p_mine predicts better than the base rate (Brier score)."""
+    from clearfast_gis.detection.likelihood import load_model
+    from clearfast_gis.evaluation.ranked import score_ranked
+
+    assert not any(t.startswith("demo-s0") for t in load_model()["fitted_on"])
+    s = score_ranked(demo_survey, demo_products)
+    p, y = s.p_mine, s.is_mine.astype(float)
+    assert y.sum() >= 4
+    assert abs(p.sum() - y.sum()) <= 3 * np.sqrt(np.sum(p * (1 - p))), (p.sum(), y.sum())
+    assert np.mean((p - y) ** 2) < 0.75 * np.mean((y.mean() - y) ** 2)
+    # every mine at most 5 cm deep is found before the list's third false alarm
+    assert s.pd_at(3 / s.footprint_m2) == 1.0
