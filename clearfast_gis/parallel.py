@@ -16,6 +16,8 @@ from typing import TypeVar
 
 import cv2
 
+from clearfast_gis import kernels
+
 T = TypeVar("T")
 R = TypeVar("R")
 
@@ -81,16 +83,29 @@ def thread_imap(fn: Callable[[T], R], items: Iterable[T], threads: int | None = 
 
 @contextmanager
 def serial_kernels() -> Iterator[None]:
-    """Run a block with OpenCV's own thread pool off (restored afterwards).
+    """Run a block with the libraries' own thread pools off (restored afterwards).
 
     The chain parallelises over frames, images and scans with :func:`thread_map`; OpenCV
     splitting each call over the same cores on top of that only adds the cost of waking its
     workers: on a 320 x 256 frame, blur and remap take twice the CPU time with two OpenCV
     threads as with one, for no gain in wall time when every core is already busy.
+
+    With the reference kernels (:func:`clearfast_gis.kernels.reference`, entered before this
+    block) SimpleITK runs on one thread too: its multi-threaded registration adds the threads'
+    partial metric sums in the order they finish, so the same registration gave results a few
+    1e-11 px apart from call to call; on one thread it gives the same bits every time.
     """
     before = cv2.getNumThreads()
     cv2.setNumThreads(1)
+    sitk_before = None
+    if kernels.reference():
+        import SimpleITK as sitk  # only the reference kernels need it (1 s to import)
+
+        sitk_before = sitk.ProcessObject.GetGlobalDefaultNumberOfThreads()
+        sitk.ProcessObject.SetGlobalDefaultNumberOfThreads(1)
     try:
         yield
     finally:
         cv2.setNumThreads(before)
+        if sitk_before is not None:
+            sitk.ProcessObject.SetGlobalDefaultNumberOfThreads(sitk_before)

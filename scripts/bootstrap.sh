@@ -24,6 +24,7 @@ if [ "$want_test" = 1 ]; then
   /usr/bin/python3 -c "import qgis.core" 2>/dev/null || apt_pkgs+=(python3-qgis qgis-providers)
   command -v qgis_process >/dev/null 2>&1 || apt_pkgs+=(qgis)
   command -v gdalinfo >/dev/null 2>&1 || apt_pkgs+=(gdal-bin)
+  command -v pdfinfo >/dev/null 2>&1 || apt_pkgs+=(poppler-utils)
 fi
 if [ "${#apt_pkgs[@]}" -gt 0 ]; then
   echo "bootstrap: installing Debian packages: ${apt_pkgs[*]}" >&2

@@ -8,8 +8,13 @@ with the host's monotonic clock at their arrival and extrapolates::
     now = max_i (utc_i + time_scale * (mono_now - mono_i))
 
 The maximum picks the sentence that arrived with the least delay (serial latency only ever
-makes a sentence late), and the result never goes backwards. ``time_scale`` is 1 for a real
-receiver; a device simulator running its scene faster than real time (``clearfast
+makes a sentence late), and the result never goes backwards. The clock gives a time once
+:data:`LOCK_AFTER` consecutive time sentences agree (within ``max_jump_s``); after that lock a
+sentence that disagrees with the extrapolation by more than ``max_jump_s`` (a receiver's
+cold-start or week-rollover date that passed the logger's checks) is refused, so one bad
+sentence never moves the survey clock; before the lock, a disagreeing sentence restarts the
+count. ``time_scale`` is 1
+for a real receiver; a device simulator running its scene faster than real time (``clearfast
 simulate-devices --time-scale``) announces its factor in the ports file, so that the same code
 waits 4 h of scene time in 4 h / time_scale of wall time. The accuracy is the latency of the
 NMEA sentences (typically 0.05-0.2 s), ample for a 0.5 s settle time and 2-3 s per position.
@@ -26,6 +31,12 @@ import time
 from collections.abc import Callable
 
 from clearfast_gis.errors import ClearfastError
+
+#: consistent time sentences after which the clock refuses a sentence that jumps
+LOCK_AFTER = 2
+
+#: wall seconds a time sentence may arrive late (a busy host) on top of ``max_jump_s``
+LATE_WALL_S = 10.0
 
 
 class ClockError(ClearfastError):
@@ -77,15 +88,20 @@ class GnssClock(SurveyClock):
         Host monotonic clock, seconds.
     window : int
         Number of recent time sentences kept.
+    max_jump_s : float
+        Largest disagreement, survey seconds, between a time sentence and the clock's
+        extrapolation that is still a consistent sentence.
 
     Attributes
     ----------
     n_observed : int
         Time sentences received.
+    n_refused : int
+        Time sentences refused for jumping away from a locked clock.
     """
 
     def __init__(self, time_scale: float = 1.0, mono: Callable[[], float] = time.monotonic,
-                 window: int = 16) -> None:
+                 window: int = 16, max_jump_s: float = 3600.0) -> None:
         if not time_scale > 0:
             raise ValueError(f"time_scale must be positive, got {time_scale}")
         self.time_scale = float(time_scale)
@@ -95,24 +111,42 @@ class GnssClock(SurveyClock):
         self._lock = threading.Lock()
         self._ready = threading.Event()
         self.n_observed = 0
+        self.n_refused = 0
+        self.max_jump_s = float(max_jump_s)
+        self._consistent = 0
 
-    def observe(self, utc_s: float, mono_s: float | None = None) -> None:
+    def observe(self, utc_s: float, mono_s: float | None = None) -> bool:
         """Record a time sentence: its UTC epoch seconds and its arrival (host monotonic
         seconds; default now). Usable as :class:`~clearfast_gis.acquire.gnss.GnssLogger`'s
-        ``on_time``."""
+        ``on_time``. Returns False when the sentence was refused (see the module
+        docstring)."""
         arrived = self._mono() if mono_s is None else float(mono_s)
+        utc = float(utc_s)
         with self._lock:
-            self._recent.append((float(utc_s), arrived))
             self.n_observed += 1
-        self._ready.set()
+            if self._recent:
+                expected = max(u + self.time_scale * (arrived - m) for u, m in self._recent)
+                # late delivery of a sentence (a busy host) counts in wall seconds
+                if abs(utc - expected) > self.max_jump_s + self.time_scale * LATE_WALL_S:
+                    if self._consistent >= LOCK_AFTER:
+                        self.n_refused += 1
+                        return False
+                    self._recent.clear()
+                    self._consistent = 0
+            self._recent.append((utc, arrived))
+            self._consistent += 1
+            locked = self._consistent >= LOCK_AFTER
+        if locked:
+            self._ready.set()
+        return True
 
     @property
     def ready(self) -> bool:
-        """True once a time sentence has been received."""
+        """True once :data:`LOCK_AFTER` consecutive time sentences agreed."""
         return self._ready.is_set()
 
     def wait_ready(self, timeout_s: float) -> bool:
-        """Wait up to ``timeout_s`` wall seconds for the first time sentence."""
+        """Wait up to ``timeout_s`` wall seconds for the clock's lock (:attr:`ready`)."""
         return self._ready.wait(timeout_s)
 
     def age_s(self) -> float:
@@ -128,13 +162,16 @@ class GnssClock(SurveyClock):
         Raises
         ------
         ClockError
-            Before the first time sentence.
+            Before the lock (:attr:`ready`).
         """
         mono = self._mono()
         with self._lock:
             if not self._recent:
                 raise ClockError("no UTC time from the GNSS receiver yet (no RMC or ZDA "
                                  "sentence)", "gnss")
+            if self._consistent < LOCK_AFTER:
+                raise ClockError(f"no UTC time from the GNSS receiver yet ({LOCK_AFTER} "
+                                 "consecutive RMC or ZDA sentences must agree)", "gnss")
             t = max(utc + self.time_scale * (mono - m) for utc, m in self._recent)
             self._last = max(self._last, t)
             return self._last

@@ -3,8 +3,12 @@
 Every complete line received is appended to the raw log exactly as it arrived (bytes and line
 ending kept; bad lines too, since the log is the receiver's record and
 :func:`clearfast_gis.survey.read_nmea` skips and counts them the same way). Each line is also
-checked: checksum errors and non-NMEA lines are counted; RMC and ZDA sentences give the
-receiver's UTC time (passed on to ``on_time``, which disciplines the survey clock,
+checked the way :func:`clearfast_gis.survey.parse_nmea` reads the log
+(:mod:`clearfast_gis.survey.nmea_lines`: junk before ``$``, ``$$``, missing checksums):
+checksum errors and non-NMEA lines are counted; valid RMC (status ``A``, two-digit years placed
+around the host clock's year, not more than a year from it) and ZDA sentences give the
+receiver's UTC time (passed on to
+``on_time``, which disciplines the survey clock and may refuse a jump,
 :class:`~clearfast_gis.acquire.clock.GnssClock`); GGA sentences update the latest fix (dated by
 the last RMC or ZDA sentence, else by the host clock's date), and a change of fix quality
 (RTK fixed to float, loss of the fix) is reported as an event.
@@ -17,17 +21,28 @@ import os
 import time
 from collections.abc import Callable
 from dataclasses import dataclass
+from datetime import UTC, datetime
 
 import pynmea2
 import serial
 
 from clearfast_gis.acquire.appendlog import AppendLog
 from clearfast_gis.acquire.linelogger import EventSink, LineLogger
-from clearfast_gis.survey.nmea import FIELD_ERRORS, gga_fields, sentence_time
+from clearfast_gis.survey.nmea_lines import (
+    FIELD_ERRORS,
+    classify_line,
+    gga_fields,
+    gga_has_time,
+    sentence_time,
+)
 from clearfast_gis.timeutil import format_utc
 
 #: half a day, seconds: a GGA time of day this far from the last dated one crossed midnight
 _HALF_DAY_S = 43200.0
+
+#: a receiver time farther than this from the host clock is implausible (a cold start's 1980
+#: date, a GPS week rollover's 19.6 years), seconds; a laptop clock is minutes off, not a year
+MAX_HOST_DISAGREEMENT_S = 366 * 86400.0
 
 #: GGA fix quality -> short name for displays
 FIX_NAMES = {0: "no fix", 1: "GPS", 2: "DGPS", 3: "PPS", 4: "RTK fixed", 5: "RTK float",
@@ -71,22 +86,16 @@ class GnssFix:
         return FIX_NAMES.get(self.fix_quality, f"quality {self.fix_quality}")
 
 
-def classify_sentence(text: str) -> tuple[str, pynmea2.NMEASentence | None]:
+def classify_sentence(text: str, checksums: str = "required"
+                      ) -> tuple[str, pynmea2.NMEASentence | None]:
     """Check one NMEA line: ``("ok", msg)``, ``("bad_checksum", None)`` or ``("junk", None)``.
 
-    Lines without a checksum count as bad checksums, as in
-    :func:`clearfast_gis.survey.parse_nmea`.
+    Lines without a checksum count as bad checksums unless ``checksums="optional"``; the
+    sentence is found as in :func:`clearfast_gis.survey.parse_nmea`.
     """
-    line = text.strip()
-    if not line.startswith("$"):
-        return "junk", None
-    try:
-        return "ok", pynmea2.parse(line, check=True)
-    except pynmea2.ChecksumError:
-        return "bad_checksum", None
-    except (pynmea2.ParseError, pynmea2.SentenceTypeError, ValueError, TypeError,
-            AttributeError, IndexError):
-        return "junk", None
+    verdict = classify_line(text, checksums)
+    kind = "bad_checksum" if verdict.kind == "no_checksum" else verdict.kind
+    return kind, verdict.msg
 
 
 class GnssLogger(LineLogger):
@@ -121,13 +130,16 @@ class GnssLogger(LineLogger):
         Valid NMEA sentences, lines with a wrong or missing checksum, non-NMEA lines.
     n_fix_changes : int
         Changes of the fix quality (the first fix included).
+    n_refused_times : int
+        Time sentences not used: more than :data:`MAX_HOST_DISAGREEMENT_S` from the host
+        clock, or refused by ``on_time`` (it returned False: a jump of the survey clock).
     """
 
     kind = "gnss"
 
     def __init__(self, port: serial.SerialBase, path: str | os.PathLike,
                  clock: Callable[[], float] = time.time, fsync_interval_s: float = 5.0,
-                 on_time: Callable[[float, float], None] | None = None,
+                 on_time: Callable[[float, float], bool | None] | None = None,
                  mono: Callable[[], float] = time.monotonic,
                  reopen: Callable[[], serial.SerialBase] | None = None, retry_s: float = 1.0,
                  on_event: EventSink | None = None) -> None:
@@ -142,6 +154,7 @@ class GnssLogger(LineLogger):
         self.n_bad_checksum = 0
         self.n_unparseable = 0
         self.n_fix_changes = 0
+        self.n_refused_times = 0
         self._dated: tuple[float, float] | None = None  # (tod_s, midnight_s) of the last date
 
     def handle_lines(self, lines: list[bytes]) -> list[bytes]:
@@ -161,17 +174,27 @@ class GnssLogger(LineLogger):
             self.n_unparseable += 1
             return
         try:
-            when = sentence_time(msg)
-            gga = gga_fields(msg) if isinstance(msg, pynmea2.GGA) else None
+            pivot = datetime.fromtimestamp(self._clock(), tz=UTC).year
+            when = sentence_time(msg, pivot)
+            gga = gga_fields(msg) if isinstance(msg, pynmea2.GGA) and gga_has_time(msg) \
+                else None
         except FIELD_ERRORS:
             self.n_unparseable += 1
             return
         self.n_sentences += 1
         if when is not None:
+            if abs(when[0] + when[1] - self._clock()) > MAX_HOST_DISAGREEMENT_S:
+                self.n_refused_times += 1  # a cold-start or week-rollover date
+                if self.n_refused_times == 1:
+                    self.event("time refused", f"receiver date "
+                               f"{format_utc(when[0] + when[1], 'seconds')} is more than a year "
+                               "from the host clock")
+                return
+            if self.on_time is not None and self.on_time(when[0] + when[1], arrived) is False:
+                self.n_refused_times += 1  # the survey clock refused a jump
+                return
             self._dated = when
             self.time_s = when[0] + when[1]
-            if self.on_time is not None:
-                self.on_time(self.time_s, arrived)
         elif gga is not None:
             self._update_fix(*gga)
 
@@ -204,6 +227,7 @@ class GnssLogger(LineLogger):
         out = super().status()
         out.update(sentences=self.n_sentences, bad_checksum=self.n_bad_checksum,
                    unparseable=self.n_unparseable, fix_changes=self.n_fix_changes,
+                   refused_times=self.n_refused_times,
                    time_utc=None if self.time_s is None else format_utc(self.time_s))
         f = self.fix
         if f is not None:

@@ -48,6 +48,8 @@ from clearfast_gis.errors import ClearfastError, InvalidInput
 from clearfast_gis.progress import NULL_PROGRESS, Progress
 from clearfast_gis.survey._text import read_text
 from clearfast_gis.survey.manifest import DEFAULT_FILES, parse_json, read_mission
+from clearfast_gis.survey.station_profiles import read_station_profile
+from clearfast_gis.survey.stations import PROFILE_KEY, PROFILE_NAME
 from clearfast_gis.timeutil import format_utc, parse_utc
 
 SESSION_REL = "acquisition/session.json"
@@ -85,6 +87,11 @@ class AcquisitionConfig:
         Survey seconds between weather station polls.
     reconnect_s : float
         Wall seconds the pan/tilt unit may stay unreachable before the run fails.
+    station_profile : Path, optional
+        Station profile of the weather station and the thermocouple logger: the weather
+        logger maps the station's columns with it; it is copied into the survey folder as
+        ``station_profile.json`` and named in ``survey.json`` (``files.station_profile``), so
+        that ``validate`` and ``process`` read the logs with it.
     """
 
     survey_dir: Path
@@ -100,6 +107,7 @@ class AcquisitionConfig:
     tail_s: float = 900.0
     weather_poll_s: float = 60.0
     reconnect_s: float = 60.0
+    station_profile: Path | None = None
 
 
 @dataclass
@@ -291,6 +299,12 @@ def _run(cfg: AcquisitionConfig, mission: dict, mission_label: str, setup: Stati
          ) -> AcquisitionSummary:
     root = Path(cfg.survey_dir)
     files = dict(DEFAULT_FILES)
+    profile = None
+    if cfg.station_profile is not None:
+        profile = read_station_profile(cfg.station_profile)
+        write_text(root / PROFILE_NAME, Path(cfg.station_profile).read_text(encoding="utf-8"))
+    elif (root / PROFILE_NAME).exists():  # a resumed acquisition keeps its profile
+        profile = read_station_profile(root / PROFILE_NAME, PROFILE_NAME)
     if "gnss" in opened:
         inst.loggers.append(GnssLogger(opened["gnss"], root / files["gnss"],
                                        on_time=clock.observe, reopen=_reopener(cfg.ports["gnss"]),
@@ -299,7 +313,7 @@ def _run(cfg: AcquisitionConfig, mission: dict, mission_label: str, setup: Stati
         inst.loggers.append(WeatherStationLogger(
             opened["weather"], root / files["weather"], clock=clock.now,
             poll_interval_s=cfg.weather_poll_s, reopen=_reopener(cfg.ports["weather"]),
-            retry_s=_retry_s(cfg), on_event=events))
+            retry_s=_retry_s(cfg), on_event=events, profile=profile))
     if "soil" in opened:
         inst.loggers.append(ThermocoupleLogger(
             opened["soil"], root / files["soil"], setup.soil_depths_m,
@@ -344,6 +358,8 @@ def _run(cfg: AcquisitionConfig, mission: dict, mission_label: str, setup: Stati
     survey_id = setup.document.get("survey_id") or root.name
     manifest = setup.manifest(survey_id, min(start_s, now),
                               start_s + int(mission["n_scans"]) * interval)
+    if profile is not None:
+        manifest["files"][PROFILE_KEY] = PROFILE_NAME
 
     runner = MissionRunner(mission, ptu, camera, root, manifest=manifest,
                            settle_s=setup.settle_s, clock=clock.now, sleep=clock.sleep,

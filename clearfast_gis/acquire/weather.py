@@ -3,11 +3,13 @@
 Assumed input: the station's datalogger (CR1000X or alike, clock on UTC) sends each 1-minute
 record of its table as one TOA5 data line on its serial port, the way ``TOA5`` files hold
 them: ``"2026-11-15 00:01:00",42,15.21,60.3,1005.2,2.10,0,301.5,0``. Columns are found by
-name when the station also sends the TOA5 header lines (the ``"TIMESTAMP","RECORD",...``
-field-name line sets the column order; the environment, units and processing lines are
-skipped); otherwise the columns are taken in the order of ``docs/contracts.md`` §2:
-``TIMESTAMP,RECORD,AirTC_Avg,RH_Avg,BP_hPa_Avg,WS_ms_Avg,SlrW_Avg,IRSky_Avg,Rain_mm_Tot``
-(the last two may be absent). ``NAN`` marks a missing value.
+name, never by position: the station's TOA5 field-name line (``"TIMESTAMP","RECORD",...``)
+sets the column order and its units line (``"TS","RN",...``) the units; the names are mapped
+to quantities by the station profile and Campbell's standard names
+(:func:`clearfast_gis.survey.station_profiles.map_columns`), and the values converted to the
+toolkit's units. A station that sends no header needs its field names in the station
+profile (``header``); data lines that cannot be mapped by name are refused and counted
+(``n_unmapped``), with one event saying why. ``NAN`` marks a missing value.
 
 Output: ``weather.dat`` in TOA5 exactly as :func:`clearfast_gis.survey.write_toa5` writes it,
 header written once when the file is new; the station's record number is kept (or counted
@@ -23,11 +25,12 @@ for the records it holds from a record number on::
              END<CR><LF>
 
 oldest first, at most a page of records (then ``MORE`` instead of ``END``: the logger asks
-again at once). The logger asks for the record after the last one in ``weather.dat``, so a
-restarted acquisition or a reconnected station fills the gap from the station's memory and
-never writes a record twice. Requests go out every ``poll_interval_s`` seconds of the survey
-clock; a request without ``END`` or ``MORE`` within ``reply_timeout_s`` (wall seconds) counts
-as a missing reply and is repeated at the next interval.
+again at once); a reply may start with the table's TOA5 field-name and units lines, as the
+digital twin's station's replies do. The logger asks for the record after the last one in
+``weather.dat``, so a restarted acquisition or a reconnected station fills the gap from the
+station's memory and never writes a record twice. Requests go out every ``poll_interval_s``
+seconds of the survey clock; a request without ``END`` or ``MORE`` within ``reply_timeout_s``
+(wall seconds) counts as a missing reply and is repeated at the next interval.
 """
 
 from __future__ import annotations
@@ -45,11 +48,9 @@ from clearfast_gis.acquire.appendlog import AppendLog
 from clearfast_gis.acquire.linelogger import EventSink, LineLogger
 from clearfast_gis.acquire.ports import SERIAL_ERRORS, PortError, _reason
 from clearfast_gis.errors import ClearfastError, InvalidInput
+from clearfast_gis.survey.station_profiles import ColumnMap, StationProfile, map_columns
 from clearfast_gis.survey.toa5 import COLUMNS, WeatherLog, toa5_text
 from clearfast_gis.timeutil import format_utc, parse_utc
-
-#: input column order assumed until the station sends a TOA5 field-name line
-DEFAULT_INPUT_COLUMNS = ("TIMESTAMP", "RECORD", *COLUMNS)
 
 
 def _empty_log() -> WeatherLog:
@@ -75,7 +76,7 @@ def toa5_record_line(time_s: float, record: int, values: dict[str, float]) -> st
         TOA5 column name -> value in the contract's units (NaN or absent = ``"NAN"``).
     """
     one = np.array([float(time_s)])
-    attrs = {attr: np.array([values.get(col, math.nan)]) for col, (attr, _, _) in COLUMNS.items()}
+    attrs = {attr: np.array([values.get(col, math.nan)]) for col, (attr, _) in COLUMNS.items()}
     line = toa5_text(WeatherLog(time_s=one, **attrs)).split("\r\n")[4]
     ts, _, rest = line.split(",", 2)
     return f"{ts},{int(record)},{rest}\r\n"
@@ -117,11 +118,17 @@ class WeatherStationLogger(LineLogger):
         Host monotonic clock, seconds (reply timeouts).
     reopen, retry_s, on_event
         As for :class:`~clearfast_gis.acquire.linelogger.LineLogger` (reconnection, events).
+    profile : StationProfile, optional
+        The station's profile: its column names and units, and the field names of a station
+        that sends no header.
 
     Attributes
     ----------
     n_records, n_bad, n_duplicates : int
         Records written, lines that are not records, records received again (polling).
+    n_unmapped : int
+        Data lines refused because their columns could not be mapped by name (no header
+        yet, or a header whose quantities or units are not known).
     n_polls, n_timeouts : int
         Requests sent and requests left without a complete reply.
 
@@ -138,13 +145,20 @@ class WeatherStationLogger(LineLogger):
                  fsync_interval_s: float = 5.0, poll_interval_s: float | None = None,
                  reply_timeout_s: float = 5.0, mono: Callable[[], float] = time.monotonic,
                  reopen: Callable[[], serial.SerialBase] | None = None, retry_s: float = 1.0,
-                 on_event: EventSink | None = None) -> None:
+                 on_event: EventSink | None = None,
+                 profile: StationProfile | None = None) -> None:
         header = toa5_header(station)
         _check_existing(path, header)
         super().__init__(port, AppendLog(path, header.encode("ascii"), fsync_interval_s),
                          reopen=reopen, retry_s=retry_s, on_event=on_event)
         self._next_record = _next_record(self.log.read_existing())
-        self._columns = list(DEFAULT_INPUT_COLUMNS)
+        self.profile = profile
+        self._columns: list[str] | None = list(profile.header) if profile and profile.header \
+            else None
+        self._units: list[str] = []
+        self._map: dict[str, ColumnMap] | None = None
+        self._why_unmapped = "no TOA5 field-name line from the station yet"
+        self.n_unmapped = 0
         self._clock = clock
         self._mono = mono
         self.poll_interval_s = poll_interval_s
@@ -219,21 +233,40 @@ class WeatherStationLogger(LineLogger):
                 self._next_poll_s = -math.inf
             return None
         if first == "TIMESTAMP":
-            self._columns = [f.strip() for f in fields]
+            if [f.strip() for f in fields] != self._columns:
+                self._columns = [f.strip() for f in fields]
+                self._units = []
+                self._map = None
             return None
-        if first in ("TOA5", "TS", ""):
-            return None  # environment, units and processing lines of a TOA5 header
+        if first == "TS":
+            if [f.strip() for f in fields] != self._units:
+                self._units = [f.strip() for f in fields]
+                self._map = None
+            return None
+        if first in ("TOA5", ""):
+            return None  # environment and processing lines of a TOA5 header
+        try:
+            parse_utc(first)
+        except (ValueError, TypeError, OverflowError, OSError):
+            self.n_bad += 1  # not a record (line noise, a reply of another kind)
+            return None
+        mapping = self._mapping()
+        if mapping is None:
+            self.n_unmapped += 1
+            if self.n_unmapped == 1:
+                self.event("unmapped", f"data line refused: {self._why_unmapped}; columns "
+                           "are mapped by name only (a station without a header needs "
+                           "\"header\" in its station profile)")
+            return None
         pos = {name: i for i, name in enumerate(self._columns)}
         try:
             time_s = parse_utc(fields[pos["TIMESTAMP"]])
             values = {}
-            for col, (_, _, required) in COLUMNS.items():
-                i = pos.get(col)
-                if i is None or i >= len(fields):
-                    if required:
-                        raise ValueError(f"missing {col}")
+            for col, (attr, _) in COLUMNS.items():
+                cm = mapping.get(attr)
+                if cm is None:
                     continue
-                values[col] = _float(fields[i])
+                values[col] = cm.scale * _float(fields[cm.index]) + cm.offset
             record = self._next_record
             if "RECORD" in pos and pos["RECORD"] < len(fields) and fields[pos["RECORD"]].strip():
                 record = int(fields[pos["RECORD"]].strip().strip('"'))
@@ -248,9 +281,19 @@ class WeatherStationLogger(LineLogger):
         self.last = {"time_s": time_s, **values}
         return toa5_record_line(time_s, record, values)
 
+    def _mapping(self) -> dict[str, ColumnMap] | None:
+        """Quantity -> column of the current header (None while it cannot be mapped)."""
+        if self._map is None and self._columns is not None:
+            try:
+                self._map = map_columns(self._columns, self._units, self.port_name,
+                                        self.profile)
+            except InvalidInput as exc:
+                self._why_unmapped = exc.message
+        return self._map
+
     def status(self) -> dict:
         out = super().status()
-        out.update(records=self.n_records, bad=self.n_bad)
+        out.update(records=self.n_records, bad=self.n_bad, unmapped=self.n_unmapped)
         if self.poll_interval_s is not None:
             out.update(polls=self.n_polls, timeouts=self.n_timeouts,
                        duplicates=self.n_duplicates)

@@ -92,10 +92,15 @@ def _camera(ctx: click.Context, param: click.Parameter, value: str | None):
 @click.option("--gnss-wait", "gnss_wait_s", type=click.FloatRange(min=0.0, min_open=True),
               default=30.0, show_default=True,
               help="Seconds to wait for the receiver's first UTC time.")
+@click.option("--station-profile", "station_profile", default=None,
+              type=click.Path(exists=True, dir_okay=False),
+              help="Station profile (JSON) of the weather station: its column names and units "
+                   "(and its field names if it sends no TOA5 header); copied into the survey "
+                   "folder and named in survey.json.")
 @progress_opt
 def command(ports_file, mission_path, setup_path, gnss_spec, ptu_spec, weather_spec,
             soil_spec, camera_spec, survey_dir, scans, start_s, time_scale, warmup_s, tail_s,
-            gnss_wait_s, progress_mode) -> None:
+            gnss_wait_s, station_profile, progress_mode) -> None:
     """Run a scanning mission stop-and-go with the field instruments (RTK-DGPS, pan/tilt unit,
     weather station, thermocouple logger, camera) into the survey folder given with -o.
 
@@ -142,7 +147,8 @@ def command(ports_file, mission_path, setup_path, gnss_spec, ptu_spec, weather_s
                                "that names them)")
     cfg = AcquisitionConfig(Path(survey_dir), mission, setup, ports, camera, scale, start_s,
                             scans=scans, gnss_wait_s=gnss_wait_s, warmup_s=warmup_s,
-                            tail_s=tail_s)
+                            tail_s=tail_s,
+                            station_profile=Path(station_profile) if station_profile else None)
     with stop_on_signals() as stop:
         summary = run_acquisition(cfg, make_progress(progress_mode), stop)
     r = summary.result

@@ -76,7 +76,7 @@ def command(survey: str, products: str, bands: tuple[str, ...], mode: str, path_
     out_dir = Path(products) / OUT_DIR
     progress = make_progress(progress_mode)
     events = calibration_events(srv)
-    weather = read_toa5(srv.path("weather"), srv.label("weather"))
+    weather = read_toa5(srv.path("weather"), srv.label("weather"), srv.station_profile)
     scans = [int(s) for s in srv.scans]
     jobs = [(s, b) for s in scans for b in band_ids]
     todo = [(s, b) for s, b in jobs if not (resume and (out_dir / output_name(s, b)).exists())]

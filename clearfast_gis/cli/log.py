@@ -110,10 +110,14 @@ class _Display:
               default=None, help="Stop after this many seconds (default: Ctrl-C or SIGTERM).")
 @click.option("--status-interval", "status_s", type=click.FloatRange(min=0.05), default=1.0,
               show_default=True, help="Seconds between status updates.")
+@click.option("--station-profile", "station_profile", default=None,
+              type=click.Path(exists=True, dir_okay=False),
+              help="Station profile (JSON): the weather station's column names and units (and "
+                   "its field names if it sends no TOA5 header).")
 @progress_opt
 def command(gnss_spec, weather_spec, soil_spec, ptu_spec, soil_depths: tuple[float, ...],
             survey_dir: str, duration_s: float | None, status_s: float,
-            progress_mode: str) -> None:
+            station_profile: str | None, progress_mode: str) -> None:
     """Log the field instruments over serial ports into a survey folder.
 
     Runs the chosen loggers concurrently and shows a status line (or JSON lines with
@@ -133,6 +137,7 @@ def command(gnss_spec, weather_spec, soil_spec, ptu_spec, soil_depths: tuple[flo
     )
     from clearfast_gis.acquire.monitor import PtuMonitor
     from clearfast_gis.errors import ClearfastError
+    from clearfast_gis.survey.station_profiles import read_station_profile
 
     chosen = [(k, s) for k, s in (("gnss", gnss_spec), ("weather", weather_spec),
                                   ("soil", soil_spec), ("ptu", ptu_spec)) if s is not None]
@@ -141,6 +146,7 @@ def command(gnss_spec, weather_spec, soil_spec, ptu_spec, soil_depths: tuple[flo
                                "or --ptu")
     root = Path(survey_dir)
     names = _file_names(root)
+    profile = read_station_profile(station_profile) if station_profile else None
     ports: dict = {}
     parts: list = []
     try:
@@ -150,7 +156,8 @@ def command(gnss_spec, weather_spec, soil_spec, ptu_spec, soil_depths: tuple[flo
             if kind == "gnss":
                 parts.append(GnssLogger(port, root / names["gnss"]))
             elif kind == "weather":
-                parts.append(WeatherStationLogger(port, root / names["weather"]))
+                parts.append(WeatherStationLogger(port, root / names["weather"],
+                                                  profile=profile))
             elif kind == "soil":
                 parts.append(ThermocoupleLogger(port, root / names["soil"], soil_depths))
             else:

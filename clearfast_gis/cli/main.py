@@ -10,7 +10,6 @@ from __future__ import annotations
 
 import importlib
 import os
-import sys
 
 import click
 
@@ -33,11 +32,36 @@ SUBCOMMANDS: dict[str, tuple[str, str]] = {
     "acquire": ("acquire", "Run a scanning mission with the field instruments."),
     "simulate-devices": ("simulate_devices", "Serve the digital twin's instruments on ptys."),
     "demo": ("demo", "Simulate the embedded demo survey and process it end to end."),
+    "options": ("options_cmd", "Show the processing defaults (--json for programs)."),
 }
 
 
 class LazyGroup(click.Group):
-    """A click group whose subcommands are imported on first use."""
+    """A click group whose subcommands are imported on first use, and which turns every error
+    of a subcommand into one line and an exit status (so ``click.testing.CliRunner`` sees
+    exactly what a shell sees)."""
+
+    def invoke(self, ctx: click.Context):
+        try:
+            return super().invoke(ctx)
+        except (click.exceptions.Exit, click.ClickException):
+            raise
+        except click.exceptions.Abort:
+            click.echo("clearfast: aborted", err=True)
+            ctx.exit(130)
+        except ClearfastError as exc:
+            click.echo(f"clearfast: error: {exc.one_line()}", err=True)
+            ctx.exit(exc.exit_code)
+        except KeyboardInterrupt:
+            click.echo("clearfast: interrupted; run again with --resume to continue", err=True)
+            ctx.exit(130)
+        except Exception as exc:  # last line of defence for the CLI
+            if os.environ.get("CLEARFAST_DEBUG"):
+                raise
+            line = " ".join(str(exc).split()) or type(exc).__name__
+            click.echo(f"clearfast: internal error: {type(exc).__name__}: {line} "
+                       "(set CLEARFAST_DEBUG=1 for details)", err=True)
+            ctx.exit(3)
 
     def list_commands(self, ctx: click.Context) -> list[str]:
         return [n for n, (mod, _) in SUBCOMMANDS.items() if _module_exists(mod)]
@@ -68,7 +92,8 @@ def group() -> None:
 
 
 def cli(argv: list[str] | None = None) -> None:
-    """Run the command line; never show a traceback for anticipated errors.
+    """Run the command line; never show a traceback for anticipated errors (the group maps
+    them, :class:`LazyGroup`).
 
     Set ``CLEARFAST_DEBUG=1`` to see the traceback of an unexpected error (and GDAL's own
     log messages, which are otherwise kept off the terminal).
@@ -79,28 +104,7 @@ def cli(argv: list[str] | None = None) -> None:
         for name in ("rasterio", "pyogrio", "fiona"):
             logging.getLogger(name).addHandler(logging.NullHandler())
             logging.getLogger(name).propagate = False
-    try:
-        rv = group.main(args=argv, prog_name="clearfast", standalone_mode=False)
-    except click.exceptions.Abort:
-        click.echo("clearfast: aborted", err=True)
-        sys.exit(130)
-    except click.ClickException as exc:
-        exc.show()
-        sys.exit(exc.exit_code)
-    except ClearfastError as exc:
-        click.echo(f"clearfast: error: {exc.one_line()}", err=True)
-        sys.exit(exc.exit_code)
-    except KeyboardInterrupt:
-        click.echo("clearfast: interrupted; run again with --resume to continue", err=True)
-        sys.exit(130)
-    except Exception as exc:  # last line of defence for the CLI
-        if os.environ.get("CLEARFAST_DEBUG"):
-            raise
-        line = " ".join(str(exc).split()) or type(exc).__name__
-        click.echo(f"clearfast: internal error: {type(exc).__name__}: {line} "
-                   "(set CLEARFAST_DEBUG=1 for details)", err=True)
-        sys.exit(3)
-    sys.exit(rv if isinstance(rv, int) else 0)
+    group.main(args=argv, prog_name="clearfast")
 
 
 if __name__ == "__main__":

@@ -9,6 +9,7 @@ from collections.abc import Iterator
 
 import click
 
+from clearfast_gis.pipeline.options import ProcessOptions
 from clearfast_gis.progress import Progress
 
 progress_opt = click.option(
@@ -36,6 +37,13 @@ survey_arg = click.argument(
     "survey", type=click.Path(exists=True, file_okay=False, dir_okay=True, readable=True)
 )
 
+station_profile_opt = click.option(
+    "--station-profile", "station_profile", default=None,
+    type=click.Path(exists=True, file_okay=True, dir_okay=False, readable=True),
+    help="Station profile (JSON) mapping the weather/soil logger's columns and units "
+         "(default: the file survey.json names in files.station_profile; docs/acquire.md).",
+)
+
 products_opt = click.option(
     "-o", "--output", "products", required=True,
     type=click.Path(file_okay=False, dir_okay=True, writable=True),
@@ -48,23 +56,33 @@ def make_progress(mode: str) -> Progress:
     return Progress(mode)
 
 
+DEFAULTS = ProcessOptions()
+"""The defaults of ``process``, ``detect``, ``batch`` and the QGIS plugin (one source:
+:class:`~clearfast_gis.pipeline.options.ProcessOptions`; ``clearfast options --json``)."""
+
+
+def _fraction(value: float | None) -> str:
+    return {0.25: "a quarter", 0.5: "half"}.get(value, f"{value:g}")
+
+
 def mosaic_options(f):
     """Mosaicking options of ``process`` (pixel size, co-registration, seam balancing)."""
     f = click.option("--pixel-size", "pixel_size_m", type=click.FloatRange(min=0.001),
-                     default=None, help="Mosaic cell size in metres (default: from the "
-                     "mission's ground resolution).")(f)
+                     default=DEFAULTS.pixel_size_m, help="Mosaic cell size in metres (default: "
+                     "from the mission's ground resolution).")(f)
     f = click.option("--no-coregister", "no_coregister", is_flag=True,
                      help="Keep the geometric placement of every frame (no MI correction).")(f)
     f = click.option("--seam-balance", is_flag=True,
                      help="Apply the paper's histogram seam balancing (changes temperatures; "
                      "recorded in the products).")(f)
-    f = click.option("--reference-scan", type=click.IntRange(min=0), default=None,
+    f = click.option("--reference-scan", type=click.IntRange(min=0),
+                     default=DEFAULTS.reference_scan,
                      help="Scan the others are co-registered to (default: the scan nearest "
                      "local solar noon).")(f)
     f = click.option("--no-atmosphere", is_flag=True,
                      help="Skip the atmospheric correction.")(f)
-    f = click.option("--kernels", type=click.Choice(["fast", "reference"]), default="fast",
-                     show_default=True,
+    f = click.option("--kernels", type=click.Choice(["fast", "reference"]),
+                     default=DEFAULTS.kernels, show_default=True,
                      help="Run the chain on our kernels or on the reference libraries "
                      "(scikit-image, SimpleITK, scipy, np.interp) for comparison.")(f)
     return f
@@ -73,29 +91,31 @@ def mosaic_options(f):
 def detection_options(f):
     """The morphological detector's parameters (paper §4), in metres on mosaics."""
     f = click.option("--d1", "d1_m", type=click.FloatRange(min=0.0, min_open=True),
-                     default=0.5, show_default=True,
+                     default=DEFAULTS.d1_m, show_default=True,
                      help="Top-hat disk D1, metres (larger than the largest mine).")(f)
     f = click.option("--d2", "d2_m", type=click.FloatRange(min=0.0, min_open=True),
-                     default=0.06, show_default=True,
+                     default=DEFAULTS.d2_m, show_default=True,
                      help="Opening disk D2 < D1, metres (removes smaller clutter).")(f)
     f = click.option("--epsilon", type=click.FloatRange(0.0, 0.5, min_open=True),
-                     default=0.01, show_default=True,
+                     default=DEFAULTS.epsilon, show_default=True,
                      help="Histogram stretching percentile fraction.")(f)
-    f = click.option("--level", type=click.IntRange(min=1), default=None,
-                     help="Majority-voting level l (default: half the scans).")(f)
-    f = click.option("--gamma", type=click.FloatRange(min=0.0), default=None,
-                     help="Combination threshold on the sum of the reconstructed images (default: "
-                     "a quarter of the scans x bands; 1 = binary OR).")(f)
-    f = click.option("--max-anomalies", type=click.IntRange(min=1), default=None,
+    f = click.option("--level", type=click.IntRange(min=1), default=DEFAULTS.level,
+                     help="Majority-voting level l, images (default: "
+                     f"{_fraction(DEFAULTS.level_fraction)} of the images covering each "
+                     "pixel).")(f)
+    f = click.option("--gamma", type=click.FloatRange(min=0.0), default=DEFAULTS.gamma,
+                     help="Combination threshold on the sum of the reconstructed images "
+                     f"(default: {_fraction(DEFAULTS.gamma_fraction)} of the images covering "
+                     "each pixel; 1 = binary OR).")(f)
+    f = click.option("--max-anomalies", type=click.IntRange(min=1),
+                     default=DEFAULTS.max_anomalies, show_default=True,
                      help="Characterise and write at most this many anomalies (highest "
-                     "scores first; default 200).")(f)
+                     "scores first).")(f)
     return f
 
 
 def build_options(params: dict, invert: bool = True):
     """ProcessOptions from the click parameters of ``process`` / ``detect``."""
-    from clearfast_gis.pipeline import ProcessOptions
-
     if params.get("d2_m") is not None and params.get("d1_m") is not None \
             and params["d2_m"] >= params["d1_m"]:
         raise click.UsageError("D2 must be smaller than D1")

@@ -11,6 +11,7 @@ from clearfast_gis.cli.options import (
     products_opt,
     progress_opt,
     resume_opt,
+    station_profile_opt,
     survey_arg,
 )
 
@@ -21,9 +22,10 @@ from clearfast_gis.cli.options import (
 @mosaic_options
 @detection_options
 @click.option("--no-invert", is_flag=True, help="Skip the depth/diffusivity estimation.")
+@station_profile_opt
 @resume_opt
 @progress_opt
-def command(survey, products, no_invert, resume, progress_mode, **params):
+def command(survey, products, no_invert, station_profile, resume, progress_mode, **params):
     """Calibrate, mosaic, detect and characterise a survey; write COG mosaics,
     anomalies.gpkg, report.html and products.json into PRODUCTS.
 
@@ -34,7 +36,8 @@ def command(survey, products, no_invert, resume, progress_mode, **params):
 
     options = build_options(params, invert=not no_invert)
     progress = make_progress(progress_mode)
-    manifest = process_survey(survey, products, options, resume=resume, progress=progress)
+    manifest = process_survey(survey, products, options, resume=resume, progress=progress,
+                              station_profile=station_profile)
     _summary(products, manifest, progress_mode)
 
 

@@ -10,7 +10,7 @@ import json
 
 import click
 
-from clearfast_gis.cli.options import survey_arg
+from clearfast_gis.cli.options import station_profile_opt, survey_arg
 
 
 def _summary_lines(summary: dict) -> list[str]:
@@ -31,6 +31,9 @@ def _summary_lines(summary: dict) -> list[str]:
     if "weather_records" in s:
         out.append(f"weather:     {s['weather_records']} records; "
                    f"{len(s.get('weather_gaps', []))} gap(s)")
+        cols = s.get("weather_columns") or {}
+        if cols:
+            out.append("  columns:   " + ", ".join(f"{q} <- {c}" for q, c in cols.items()))
     if "calibration_events" in s:
         out.append(f"calibration: {s['calibration_events']} blackbody event(s)")
     if "markers" in s:
@@ -45,13 +48,15 @@ def _summary_lines(summary: dict) -> list[str]:
               default=10.0, show_default=True, help="Report GNSS gaps longer than this (s).")
 @click.option("--weather-gap", "weather_gap_s", type=click.FloatRange(min=0.0, min_open=True),
               default=180.0, show_default=True, help="Report weather gaps longer than this (s).")
+@station_profile_opt
 @click.pass_context
 def command(ctx: click.Context, survey: str, as_json: bool, gnss_gap_s: float,
-            weather_gap_s: float) -> None:
+            weather_gap_s: float, station_profile: str | None) -> None:
     """Check the survey folder SURVEY completely: schema, files, tables, logs, time coverage."""
     from clearfast_gis.survey.validate import validate_survey
 
-    report = validate_survey(survey, gnss_gap_s=gnss_gap_s, weather_gap_s=weather_gap_s)
+    report = validate_survey(survey, gnss_gap_s=gnss_gap_s, weather_gap_s=weather_gap_s,
+                             station_profile=station_profile)
     if as_json:
         click.echo(json.dumps(report.to_dict(), indent=2))
     else:

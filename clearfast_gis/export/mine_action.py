@@ -1,10 +1,17 @@
-"""Export of suspects for a national mine action database (WGS84 GeoPackage + CSV).
+"""Export for a national mine action database (IMSMA Core): WGS84 GeoPackage + CSV tables.
 
-Every row is an *indication* from indirect evidence (stand-off thermal IR): a thermal anomaly is
-never automatically a confirmed hazardous area. Field names and meanings are listed in
-``docs/mine_action.md``. Ids are stable: ``CF-<SURVEY>-<NNNN>``, numbered by position (north to
-south, then west to east, on a 1 cm grid), so re-running the export on the same products gives
-the same ids and byte-identical CSV.
+Three record types, as a mine action centre's land-release process works with them (IMAS
+07.11): the **surveyed area** (the survey footprint, a polygon), **suspected-hazard polygon
+proposals** around clusters of mine indications (:mod:`clearfast_gis.export.hazard_areas`), and
+the **evidence points** (the suspects above a stated mine likelihood, or all on request), each
+linked to its proposal. Every record is built on indirect evidence (stand-off thermal IR): a
+thermal anomaly is never automatically a confirmed hazardous area.
+
+Field names (at most 31 characters, ``imsma_id`` and an empty ``imsma_links`` as IMSMA Core's
+data model expects) and meanings are listed in ``docs/mine_action.md``. Ids are stable:
+``CF-<SURVEY>-<NNNN>`` for evidence, numbered over all suspects by position (north to south,
+then west to east, on a 1 cm grid), ``CF-<SURVEY>-H<NN>`` for proposals, ``CF-<SURVEY>-SA`` for
+the surveyed area; the same products always give the same ids and byte-identical CSV.
 """
 
 from __future__ import annotations
@@ -20,7 +27,7 @@ from pathlib import Path
 
 import numpy as np
 
-from clearfast_gis.atomic import write_text
+from clearfast_gis.atomic import write_bytes, write_text
 from clearfast_gis.errors import InvalidInput
 from clearfast_gis.progress import NULL_PROGRESS, Progress
 from clearfast_gis.timeutil import format_utc, parse_utc
@@ -28,15 +35,29 @@ from clearfast_gis.timeutil import format_utc, parse_utc
 METHOD = "stand-off thermal IR"
 EVIDENCE = "indirect"
 LAND_CLASS = "indication"
+HAZARD_CLASS = "suspected hazardous area (proposed)"
+SURVEY_RESULT = "surveyed by stand-off thermal IR; not cleared"
 LAYER_NAME = "indications"
+HAZARD_LAYER = "hazard_proposals"
+AREA_LAYER = "surveyed_area"
 GPKG_NAME = "mine_action.gpkg"
 CSV_NAME = "mine_action.csv"
+HAZARD_CSV = "hazard_proposals.csv"
+AREA_CSV = "surveyed_area.csv"
+XLSX_NAME = "mine_action.xlsx"
+MINE_CUES = ("at_mine", "ap_mine")
+DEFAULT_MIN_LIKELIHOOD = 0.5
+"""Mine likelihood (``p_mine``) from which a suspect is exported as evidence."""
+ORGANISATION_ENV = "CLEARFAST_ORGANISATION"
+"""Environment variable with the surveying organisation's name (default of ``--organisation``)."""
 
 FIX_LABELS = {0: "no fix", 1: "autonomous", 2: "DGPS", 4: "RTK fixed", 5: "RTK float",
               6: "dead reckoning"}
 
 MINE_ACTION_FIELDS: dict[str, str] = {
-    "hazard_id": "Stable IMSMA-style text id CF-<SURVEY>-<NNNN>",
+    "imsma_id": "Stable text id CF-<SURVEY>-<NNNN>",
+    "imsma_links": "Empty: links are made in IMSMA Core",
+    "hazard_ref": "imsma_id of the hazard proposal that holds the point (empty if none)",
     "source_anomaly_id": "anomaly_id in the products' suspects layer",
     "survey_id": "Survey id (products.json)",
     "survey_date_utc": "Survey start, ISO 8601 UTC",
@@ -48,8 +69,12 @@ MINE_ACTION_FIELDS: dict[str, str] = {
     "method": f'Always "{METHOD}"',
     "evidence": f'Always "{EVIDENCE}"',
     "land_class": f'Always "{LAND_CLASS}" (never a confirmed hazardous area)',
+    "organisation": "Surveying organisation (--organisation)",
+    "mine_indication": "yes when the suspect is a mine indication (likelihood or class cue)",
+    "mine_likelihood": "Mine likelihood p_mine, 0-1 (empty when the products have none)",
+    "priority": "Rank for technical survey, 1 = first (empty when the products have none)",
     "class_cue": "at_mine, ap_mine, clutter or unknown (from size and thermal diffusivity)",
-    "cue_confidence": "Confidence of the class cue, 0-1 (not a mine likelihood)",
+    "cue_confidence": "Confidence of the class cue, 0-1",
     "depth_m": "Estimated burial depth, metres (empty if not characterised)",
     "depth_sigma_m": "Depth uncertainty (1 sigma), metres",
     "diameter_m": "Diameter of the thermal footprint, metres",
@@ -57,10 +82,51 @@ MINE_ACTION_FIELDS: dict[str, str] = {
     "gnss_fix": "Fix quality in words; '(degraded)' unless RTK fixed",
     "status": "Characterisation status: ok, at_bound, weak_contrast, not_characterised",
 }
-"""Columns of the export, in order, with their meaning."""
+"""Columns of the evidence points (layer ``indications``, ``mine_action.csv``), in order."""
+
+HAZARD_FIELDS: dict[str, str] = {
+    "imsma_id": "Stable text id CF-<SURVEY>-H<NN>",
+    "imsma_links": "Empty: links are made in IMSMA Core",
+    "survey_id": "Survey id (products.json)",
+    "survey_date_utc": "Survey start, ISO 8601 UTC",
+    "land_class": f'Always "{HAZARD_CLASS}"',
+    "method": f'Always "{METHOD}"',
+    "evidence": f'Always "{EVIDENCE}"',
+    "organisation": "Surveying organisation",
+    "buffer_m": "Radius of the disc around each mine indication, metres",
+    "n_indications": "Mine indications inside",
+    "evidence_ids": "imsma_id of those indications, comma-separated",
+    "area_m2": "Area in the survey's UTM CRS, square metres",
+    "centroid_lat_deg": "Centroid latitude, WGS84 decimal degrees",
+    "centroid_lon_deg": "Centroid longitude, WGS84 decimal degrees",
+    "wkt": "Polygon in WGS84 (lon lat), WKT (CSV only)",
+}
+"""Columns of the hazard polygon proposals (layer and CSV)."""
+
+AREA_FIELDS: dict[str, str] = {
+    "imsma_id": "Stable text id CF-<SURVEY>-SA",
+    "imsma_links": "Empty: links are made in IMSMA Core",
+    "survey_id": "Survey id (products.json)",
+    "survey_start_utc": "Survey start, ISO 8601 UTC",
+    "survey_end_utc": "Survey end, ISO 8601 UTC",
+    "method": f'Always "{METHOD}"',
+    "organisation": "Surveying organisation",
+    "result": f'Always "{SURVEY_RESULT}"',
+    "area_m2": "Area in the survey's UTM CRS, square metres",
+    "n_suspects": "Suspects found",
+    "n_indications": "Mine indications among them",
+    "n_hazard_proposals": "Hazard polygons proposed",
+    "utm_epsg": "EPSG code of the survey's UTM CRS",
+    "wkt": "Polygon in WGS84 (lon lat), WKT (CSV only)",
+}
+"""Columns of the surveyed-area record (layer and CSV)."""
 
 _DECIMALS = {"latitude_deg": 8, "longitude_deg": 8, "utm_easting_m": 3, "utm_northing_m": 3,
-             "cue_confidence": 3, "depth_m": 4, "depth_sigma_m": 4, "diameter_m": 3}
+             "cue_confidence": 3, "mine_likelihood": 3, "depth_m": 4, "depth_sigma_m": 4,
+             "diameter_m": 3, "buffer_m": 1, "area_m2": 2, "centroid_lat_deg": 8,
+             "centroid_lon_deg": 8}
+WGS84_GRID_DEG = 1e-8
+"""Coordinates of the exported polygons are rounded to this grid (about 1 mm)."""
 
 
 @dataclass(frozen=True)
@@ -70,6 +136,10 @@ class MineActionExport:
     gpkg: Path
     csv: Path
     count: int
+    hazard_proposals: int
+    hazard_csv: Path
+    area_csv: Path
+    xlsx: Path
 
 
 def survey_code(survey_id: str) -> str:
@@ -120,25 +190,41 @@ def fix_label(quality) -> str:
     return label if q == 4 else f"{label} (degraded)"
 
 
-def mine_action_table(suspects, survey_id: str, survey_date_utc: str, epsg: int):
-    """The export rows for a suspects layer.
+def mine_indications(suspects, min_likelihood: float = DEFAULT_MIN_LIKELIHOOD) -> np.ndarray:
+    """Which suspects are mine indications: ``p_mine >= min_likelihood`` when the products have
+    a mine likelihood (a ``p_mine`` column with values), else an AT/AP class cue. Boolean
+    array, shape (N,)."""
+    if "p_mine" in suspects and suspects["p_mine"].notna().any():
+        p = suspects["p_mine"].to_numpy(np.float64)
+        return np.isfinite(p) & (p >= float(min_likelihood))
+    return np.isin(np.asarray([str(c) for c in suspects["class_cue"]]), MINE_CUES)
+
+
+def mine_action_table(suspects, survey_id: str, survey_date_utc: str, epsg: int,
+                      organisation: str = "",
+                      min_likelihood: float = DEFAULT_MIN_LIKELIHOOD):
+    """The evidence rows for a suspects layer (all suspects; ``hazard_ref`` left empty).
 
     Parameters
     ----------
     suspects : geopandas.GeoDataFrame or pandas.DataFrame
         The ``suspects`` layer (columns of ``schemas/anomaly.schema.json``; ``x``, ``y`` in the
-        survey CRS).
+        survey CRS; ``p_mine``, ``priority`` and ``cue_confidence`` used when present).
     survey_id : str
         Survey id.
     survey_date_utc : str
         Survey start, ISO 8601 UTC.
     epsg : int
         EPSG code of the survey's UTM CRS.
+    organisation : str
+        Surveying organisation.
+    min_likelihood : float
+        See :func:`mine_indications`.
 
     Returns
     -------
     pandas.DataFrame
-        Columns :data:`MINE_ACTION_FIELDS`, one row per suspect, sorted by ``hazard_id``.
+        Columns :data:`MINE_ACTION_FIELDS`, one row per suspect, sorted by ``imsma_id``.
     """
     import pandas as pd
     from pyproj import Transformer
@@ -149,11 +235,17 @@ def mine_action_table(suspects, survey_id: str, survey_date_utc: str, epsg: int)
     ids = stable_ids(survey_id, x, y, [str(a) for a in suspects["anomaly_id"]])
     fix = suspects["fix_quality"] if "fix_quality" in suspects else pd.Series([None] * len(x))
 
-    def col(name):
-        return suspects[name].to_numpy() if name in suspects else np.full(len(x), np.nan)
+    def col(*names):
+        for name in names:
+            if name in suspects:
+                return suspects[name].to_numpy().astype(np.float64)
+        return np.full(len(x), np.nan)
 
+    priority = col("priority")
     table = pd.DataFrame({
-        "hazard_id": ids,
+        "imsma_id": ids,
+        "imsma_links": "",
+        "hazard_ref": "",
         "source_anomaly_id": [str(a) for a in suspects["anomaly_id"]],
         "survey_id": survey_id,
         "survey_date_utc": survey_date_utc,
@@ -165,26 +257,30 @@ def mine_action_table(suspects, survey_id: str, survey_date_utc: str, epsg: int)
         "method": METHOD,
         "evidence": EVIDENCE,
         "land_class": LAND_CLASS,
+        "organisation": organisation,
+        "mine_indication": np.where(mine_indications(suspects, min_likelihood), "yes", "no"),
+        "mine_likelihood": col("p_mine"),
+        "priority": pd.array([None if np.isnan(p) else int(p) for p in priority], "Int64"),
         "class_cue": [str(c) for c in suspects["class_cue"]],
-        "cue_confidence": col("cue_confidence").astype(np.float64),
-        "depth_m": col("depth_m").astype(np.float64),
-        "depth_sigma_m": col("depth_sigma_m").astype(np.float64),
-        "diameter_m": col("diameter_m").astype(np.float64),
+        "cue_confidence": col("cue_confidence", "confidence"),
+        "depth_m": col("depth_m"),
+        "depth_sigma_m": col("depth_sigma_m"),
+        "diameter_m": col("diameter_m"),
         "gnss_fix_quality": pd.array([None if pd.isna(q) else int(q) for q in fix], "Int64"),
         "gnss_fix": [fix_label(None if pd.isna(q) else q) for q in fix],
         "status": [str(s) for s in suspects["status"]],
     }, columns=list(MINE_ACTION_FIELDS))
-    return table.sort_values("hazard_id", kind="stable").reset_index(drop=True)
+    return table.sort_values("imsma_id", kind="stable").reset_index(drop=True)
 
 
-def table_to_csv(table) -> str:
-    """CSV text of :func:`mine_action_table` rows: fixed decimals, empty cells for nulls."""
+def table_to_csv(table, fields=MINE_ACTION_FIELDS) -> str:
+    """CSV text of export rows: the columns ``fields``, fixed decimals, empty cells for nulls."""
     buf = io.StringIO()
     writer = csv.writer(buf, lineterminator="\n")
-    writer.writerow(list(MINE_ACTION_FIELDS))
-    for row in table.itertuples(index=False):
+    writer.writerow(list(fields))
+    for row in table[list(fields)].itertuples(index=False):
         cells = []
-        for name, value in zip(MINE_ACTION_FIELDS, row, strict=True):
+        for name, value in zip(fields, row, strict=True):
             if value is None or (not isinstance(value, str) and _isnull(value)):
                 cells.append("")
             elif name in _DECIMALS:
@@ -201,63 +297,211 @@ def _isnull(value) -> bool:
     return bool(pd.isna(value))
 
 
+def _to_wgs84(geoms, epsg: int):
+    """UTM polygons to WGS84, on a :data:`WGS84_GRID_DEG` grid, without repeated vertices."""
+    import shapely
+    from pyproj import Transformer
+
+    from clearfast_gis.export.hazard_areas import clean_polygon
+
+    fwd = Transformer.from_crs(int(epsg), 4326, always_xy=True)
+    out = []
+    for g in geoms:
+        ll = shapely.transform(g, lambda xy: np.column_stack(fwd.transform(xy[:, 0], xy[:, 1])))
+        out.append(clean_polygon(shapely.set_precision(ll, WGS84_GRID_DEG)))
+    return out
+
+
+def hazard_table(evidence, epsg: int, survey_id: str, organisation: str, buffer_m: float):
+    """Hazard polygon proposals around the mine indications of ``evidence``.
+
+    Sets ``hazard_ref`` of the evidence rows inside a proposal (in place).
+
+    Returns
+    -------
+    (pandas.DataFrame, list of shapely.Polygon)
+        Columns :data:`HAZARD_FIELDS` and the polygons in WGS84, one per proposal.
+    """
+    import pandas as pd
+    import shapely
+
+    from clearfast_gis.export.hazard_areas import hazard_clusters
+
+    mine = np.flatnonzero(evidence["mine_indication"].to_numpy() == "yes")
+    clusters = hazard_clusters(evidence["utm_easting_m"].to_numpy()[mine],
+                               evidence["utm_northing_m"].to_numpy()[mine], buffer_m)
+    code = survey_code(survey_id)
+    rows, polys = [], _to_wgs84([poly for poly, _ in clusters], epsg)
+    hazard_col = evidence.columns.get_loc("hazard_ref")
+    for k, ((poly, members), ll) in enumerate(zip(clusters, polys, strict=True), start=1):
+        hid = f"CF-{code}-H{k:02d}"
+        idx = sorted(int(mine[m]) for m in members)
+        evidence.iloc[idx, hazard_col] = hid
+        centre = ll.centroid
+        rows.append({
+            "imsma_id": hid, "imsma_links": "", "survey_id": survey_id,
+            "survey_date_utc": evidence["survey_date_utc"].iloc[0], "land_class": HAZARD_CLASS,
+            "method": METHOD, "evidence": EVIDENCE, "organisation": organisation,
+            "buffer_m": float(buffer_m), "n_indications": len(idx),
+            "evidence_ids": ",".join(evidence["imsma_id"].iloc[idx]),
+            "area_m2": float(poly.area), "centroid_lat_deg": centre.y,
+            "centroid_lon_deg": centre.x, "wkt": shapely.to_wkt(ll, rounding_precision=8)})
+    return pd.DataFrame(rows, columns=list(HAZARD_FIELDS)), polys
+
+
+def surveyed_area_table(footprint_utm, epsg: int, manifest: dict, organisation: str,
+                        n_suspects: int, n_indications: int, n_hazards: int):
+    """The surveyed-area record: the survey footprint (one polygon, UTM in, WGS84 out).
+
+    Returns
+    -------
+    (pandas.DataFrame, list of shapely geometry)
+        Columns :data:`AREA_FIELDS`, one row, and its WGS84 polygon.
+    """
+    import pandas as pd
+    import shapely
+
+    area = shapely.union_all(list(footprint_utm))
+    ll = _to_wgs84([area], epsg)
+    start = format_utc(parse_utc(manifest["time"]["start_utc"]), "seconds")
+    end = format_utc(parse_utc(manifest["time"]["end_utc"]), "seconds")
+    row = {"imsma_id": f"CF-{survey_code(manifest['survey_id'])}-SA", "imsma_links": "",
+           "survey_id": manifest["survey_id"], "survey_start_utc": start,
+           "survey_end_utc": end, "method": METHOD, "organisation": organisation,
+           "result": SURVEY_RESULT, "area_m2": float(area.area), "n_suspects": n_suspects,
+           "n_indications": n_indications, "n_hazard_proposals": n_hazards,
+           "utm_epsg": int(epsg), "wkt": shapely.to_wkt(ll[0], rounding_precision=8)}
+    return pd.DataFrame([row], columns=list(AREA_FIELDS)), ll
+
+
+def _read_layer(gpkg, layer: str, required: Sequence[str]):
+    import pyogrio
+
+    try:
+        frame = pyogrio.read_dataframe(gpkg, layer=layer)
+    except Exception as exc:  # pyogrio raises DataSourceError / DataLayerError
+        raise InvalidInput(f"cannot read the {layer} layer ({exc})", gpkg, layer) from None
+    missing = [c for c in required if c not in frame]
+    if missing:
+        raise InvalidInput("missing column", gpkg, f"{layer}.{missing[0]}")
+    return frame
+
+
+def _manifest_times(manifest: dict, path: Path) -> str:
+    for key in ("start_utc", "end_utc"):
+        try:
+            stamp = format_utc(parse_utc(manifest["time"][key]), "seconds")
+        except (KeyError, TypeError, ValueError):
+            raise InvalidInput("not an ISO 8601 UTC time", path, f"time.{key}") from None
+        if key == "start_utc":
+            start = stamp
+    return start
+
+
 def export_mine_action(products_dir: str | os.PathLike, out_dir: str | os.PathLike | None = None,
-                       progress: Progress = NULL_PROGRESS) -> MineActionExport:
-    """Write ``mine_action.gpkg`` (layer ``indications``, EPSG:4326) and ``mine_action.csv``.
+                       progress: Progress = NULL_PROGRESS, *,
+                       min_likelihood: float = DEFAULT_MIN_LIKELIHOOD,
+                       include_all: bool = False, buffer_m: float | None = None,
+                       organisation: str | None = None) -> MineActionExport:
+    """Write ``mine_action.gpkg`` (EPSG:4326) and its CSV tables for IMSMA Core.
+
+    Layers: ``indications`` (evidence points), ``hazard_proposals`` and ``surveyed_area``
+    (polygons); CSVs ``mine_action.csv``, ``hazard_proposals.csv``, ``surveyed_area.csv``, and
+    the three tables as sheets of ``mine_action.xlsx``.
+    Field names and geometries are checked before anything is written.
 
     Parameters
     ----------
     products_dir : path
-        A products folder (``products.json`` and ``anomalies.gpkg`` with a ``suspects`` layer).
+        A products folder (``products.json`` and ``anomalies.gpkg`` with ``suspects`` and
+        ``footprint`` layers).
     out_dir : path, optional
         Output folder; default ``<products_dir>/mine_action``.
     progress : Progress
         Reporter (stage ``mine_action``, 3 steps).
+    min_likelihood : float
+        Mine likelihood from which a suspect is a mine indication (see
+        :func:`mine_indications`).
+    include_all : bool
+        Export every suspect as evidence, not only the mine indications.
+    buffer_m : float, optional
+        Disc radius of the hazard proposals, metres (default
+        :data:`~clearfast_gis.export.hazard_areas.DEFAULT_BUFFER_M`).
+    organisation : str, optional
+        Surveying organisation; default the ``CLEARFAST_ORGANISATION`` environment variable
+        (empty when unset).
 
     Returns
     -------
     MineActionExport
     """
     import geopandas as gpd
-    import pyogrio
 
     from clearfast_gis.export.geopackage import write_geopackage
+    from clearfast_gis.export.hazard_areas import (
+        DEFAULT_BUFFER_M,
+        check_field_names,
+        check_geometries,
+    )
     from clearfast_gis.export.manifest import read_products_manifest
-    from clearfast_gis.export.styles import mine_action_style
+    from clearfast_gis.export.styles import mine_action_styles
+    from clearfast_gis.export.xlsx import workbook_bytes
 
     products = Path(products_dir)
     out = Path(out_dir) if out_dir is not None else products / "mine_action"
+    buffer_m = DEFAULT_BUFFER_M if buffer_m is None else float(buffer_m)
+    if not (math.isfinite(buffer_m) and buffer_m > 0):
+        raise InvalidInput("the hazard buffer must be a positive number of metres", out,
+                           "buffer_m")
+    if not 0.0 <= min_likelihood <= 1.0:
+        raise InvalidInput("a likelihood is between 0 and 1", out, "min_likelihood")
+    if organisation is None:
+        organisation = os.environ.get(ORGANISATION_ENV, "")
     manifest = read_products_manifest(products)
     gpkg_in = products / "anomalies.gpkg"
     if not gpkg_in.is_file():
         raise InvalidInput("missing: no anomalies.gpkg in the products folder", gpkg_in)
-    try:
-        survey_date = format_utc(parse_utc(manifest["time"]["start_utc"]), "seconds")
-    except ValueError:
-        raise InvalidInput("not an ISO 8601 UTC time", products / "products.json",
-                           "time.start_utc") from None
+    survey_date = _manifest_times(manifest, products / "products.json")
     progress.start("mine_action", 3)
     try:
-        try:
-            suspects = pyogrio.read_dataframe(gpkg_in, layer="suspects")
-        except Exception as exc:  # pyogrio raises DataSourceError / DataLayerError
-            raise InvalidInput(f"cannot read the suspects layer ({exc})", gpkg_in,
-                               "suspects") from None
-        missing = [c for c in ("anomaly_id", "x", "y", "class_cue", "status")
-                   if c not in suspects]
-        if missing:
-            raise InvalidInput("missing column", gpkg_in, f"suspects.{missing[0]}")
+        suspects = _read_layer(gpkg_in, "suspects",
+                               ("anomaly_id", "x", "y", "class_cue", "status"))
+        footprint = _read_layer(gpkg_in, "footprint", ())
         progress.advance()
         epsg = int(manifest["crs"]["epsg"])
-        table = mine_action_table(suspects, manifest["survey_id"], survey_date, epsg)
+        table = mine_action_table(suspects, manifest["survey_id"], survey_date, epsg,
+                                  organisation, min_likelihood)
+        hazards, hazard_polys = hazard_table(table, epsg, manifest["survey_id"],
+                                             organisation, buffer_m)
+        n_mine = int((table["mine_indication"] == "yes").sum())
+        area, area_polys = surveyed_area_table(footprint.geometry, epsg, manifest,
+                                               organisation, len(table), n_mine, len(hazards))
+        evidence = table if include_all else table[table["mine_indication"] == "yes"]
+        evidence = evidence.reset_index(drop=True)
+        points = gpd.points_from_xy(evidence["longitude_deg"], evidence["latitude_deg"])
+        layers = {
+            LAYER_NAME: gpd.GeoDataFrame(evidence, geometry=points, crs=4326),
+            HAZARD_LAYER: gpd.GeoDataFrame(hazards.drop(columns="wkt"),
+                                           geometry=gpd.GeoSeries(hazard_polys, crs=4326)),
+            AREA_LAYER: gpd.GeoDataFrame(area.drop(columns="wkt"),
+                                         geometry=gpd.GeoSeries(area_polys, crs=4326)),
+        }
+        gpkg_out = out / GPKG_NAME
+        for name, frame in layers.items():
+            check_field_names([c for c in frame.columns if c != "geometry"], gpkg_out, name)
+            check_geometries(list(frame.geometry), list(frame["imsma_id"]), gpkg_out, name)
         progress.advance()
-        frame = gpd.GeoDataFrame(
-            table, geometry=gpd.points_from_xy(table["longitude_deg"], table["latitude_deg"]),
-            crs=4326)
-        gpkg_out = Path(write_geopackage(out / GPKG_NAME, {LAYER_NAME: frame},
-                                         {LAYER_NAME: mine_action_style()}))
-        csv_out = write_text(out / CSV_NAME, table_to_csv(table))
+        end_s = parse_utc(manifest["time"]["end_utc"])
+        write_geopackage(gpkg_out, layers, mine_action_styles(), timestamp_s=end_s)
+        csv_out = write_text(out / CSV_NAME, table_to_csv(evidence))
+        hazard_csv = write_text(out / HAZARD_CSV, table_to_csv(hazards, HAZARD_FIELDS))
+        area_csv = write_text(out / AREA_CSV, table_to_csv(area, AREA_FIELDS))
+        xlsx = write_bytes(out / XLSX_NAME, workbook_bytes(
+            {"evidence": (evidence, list(MINE_ACTION_FIELDS)),
+             HAZARD_LAYER: (hazards, list(HAZARD_FIELDS)),
+             AREA_LAYER: (area, list(AREA_FIELDS))}, _DECIMALS, end_s))
         progress.advance()
     finally:
         progress.close()
-    return MineActionExport(gpkg_out, Path(csv_out), len(table))
+    return MineActionExport(gpkg_out, Path(csv_out), len(evidence), len(hazards),
+                            Path(hazard_csv), Path(area_csv), Path(xlsx))

@@ -8,6 +8,7 @@ indications, orange for unknown anomalies, grey for clutter. Mosaics use a therm
 from __future__ import annotations
 
 import xml.etree.ElementTree as ET
+from collections.abc import Iterable
 from pathlib import Path
 
 STYLES_DIR = Path(__file__).resolve().parents[1] / "styles"
@@ -16,12 +17,20 @@ STYLES_DIR = Path(__file__).resolve().parents[1] / "styles"
 LAYER_STYLES: dict[str, str] = {
     "anomalies": "anomalies.qml",
     "suspects": "suspects.qml",
+    "candidates": "suspects.qml",
     "markers": "markers.qml",
     "footprint": "footprint.qml",
 }
-"""GeoPackage layer name -> QML file of its default style."""
+"""GeoPackage layer name -> QML file of its default style. ``suspects.qml`` is built in QGIS by
+``scripts/build_suspects_style.py`` (the set-aside ``candidates`` share it)."""
 
 MINE_ACTION_STYLE = "mine_action.qml"
+MINE_ACTION_LAYER_STYLES: dict[str, str] = {
+    "indications": MINE_ACTION_STYLE,
+    "hazard_proposals": "hazard_proposals.qml",
+    "surveyed_area": "surveyed_area.qml",
+}
+"""Layer of ``mine_action.gpkg`` -> QML file of its default style."""
 MOSAIC_STYLE = "mosaic.qml"
 
 CLASS_COLOURS_RGB: dict[str, tuple[int, int, int]] = {
@@ -38,14 +47,25 @@ def style_text(file_name: str) -> str:
     return (STYLES_DIR / file_name).read_text(encoding="utf-8")
 
 
-def default_styles() -> dict[str, str]:
-    """Default styles of the ``anomalies.gpkg`` layers: layer name -> QML text."""
-    return {layer: style_text(name) for layer, name in LAYER_STYLES.items()}
+def default_styles(layers: Iterable[str] | None = None) -> dict[str, str]:
+    """Default styles of the ``anomalies.gpkg`` layers: layer name -> QML text.
+
+    ``layers`` limits them to the layers actually written (default: all of
+    :data:`LAYER_STYLES`); layers without a default style are left out.
+    """
+    names = LAYER_STYLES if layers is None else [n for n in layers if n in LAYER_STYLES]
+    return {layer: style_text(LAYER_STYLES[layer]) for layer in names}
 
 
 def mine_action_style() -> str:
-    """QML of the mine-action indications layer (class colours, labelled by ``hazard_id``)."""
+    """QML of the mine-action indications layer (class colours, labelled by ``imsma_id``)."""
     return style_text(MINE_ACTION_STYLE)
+
+
+def mine_action_styles() -> dict[str, str]:
+    """Default styles of the ``mine_action.gpkg`` layers: layer name -> QML text (evidence by
+    class colour, hazard proposals red, the surveyed area a dashed outline)."""
+    return {layer: style_text(name) for layer, name in MINE_ACTION_LAYER_STYLES.items()}
 
 
 def mosaic_ramp_stops() -> list[tuple[float, tuple[int, int, int]]]:

@@ -185,9 +185,9 @@ def make_demo_products(root: str | os.PathLike, n_scans: int = 4, pixel_size_m: 
          "description": ["surveyed reference stake"] * len(marker_xy)},
         geometry=[shapely.Point(e0 + dx, n0 + dy) for dx, dy in marker_xy], crs=EPSG)
     foot = gpd.GeoDataFrame({"scans": [n_scans]}, geometry=[footprint], crs=EPSG)
-    write_geopackage(root / "anomalies.gpkg",
-                     {"anomalies": anomalies, "suspects": suspects, "markers": markers,
-                      "footprint": foot}, default_styles())
+    layers = {"anomalies": anomalies, "suspects": suspects, "markers": markers,
+              "footprint": foot}
+    write_geopackage(root / "anomalies.gpkg", layers, default_styles(layers))
     write_products_manifest(root, {
         "survey_id": "demo-seed0" if seed == 0 else f"demo-seed{seed}",
         "created_utc": format_utc(times_s[-1] + 3600.0, "seconds"),

@@ -1,7 +1,8 @@
 """RTK-DGPS fixes to world positions: UTM zone, WGS84 <-> survey CRS, the platform track.
 
 The track interpolates the antenna position linearly in time between usable fixes (GGA fix
-quality > 0), keeps the fix quality of every epoch (4 = RTK fixed; anything else is degraded)
+quality 1-5; 6 dead reckoning, 7 manual and 8 simulator are not measurements), keeps the fix
+quality of every epoch (4 = RTK fixed; anything else is degraded)
 and refuses frame times that are too far from any usable fix.
 """
 
@@ -16,6 +17,7 @@ import numpy as np
 from pyproj import CRS, Transformer
 
 from clearfast_gis.errors import InvalidInput
+from clearfast_gis.survey.nmea_lines import USABLE_FIX_QUALITIES
 from clearfast_gis.timeutil import format_utc
 
 #: GGA fix quality of an RTK fixed solution (anything else is degraded)
@@ -91,7 +93,7 @@ class PlatformTrack:
     fix_quality : int (N,)
         GGA fix quality of every epoch.
     usable : bool (N,)
-        Epochs with a fix (quality > 0 and finite coordinates); only these are interpolated.
+        Epochs with a fix (quality 1-5 and finite coordinates); only these are interpolated.
     position_m : float64 (N, 3)
         (E, N, z above ground) of every epoch, NaN where not usable.
     epsg : int
@@ -217,10 +219,10 @@ def platform_track(gnss_log: GnssArrays, epsg: int, ground_altitude_m: float,
     lon = arrays["lon_deg"][order].astype(float)
     alt = arrays["alt_m"][order].astype(float)
     quality = arrays["fix_quality"][order].astype(int)
-    usable = (quality > 0) & np.isfinite(lat) & np.isfinite(lon) & np.isfinite(alt) \
-        & np.isfinite(t)
+    usable = np.isin(quality, USABLE_FIX_QUALITIES) & np.isfinite(lat) & np.isfinite(lon) \
+        & np.isfinite(alt) & np.isfinite(t)
     if not np.any(usable):
-        raise InvalidInput("no usable fix (every epoch has fix quality 0)", source,
+        raise InvalidInput("no usable fix (no epoch has fix quality 1-5)", source,
                            "fix_quality")
     # keep one epoch per time (a repeated timestamp would break interpolation)
     dup = np.zeros(n, dtype=bool)
@@ -252,9 +254,9 @@ def distance_to_nearest_s(sorted_times_s: np.ndarray, time_s: np.ndarray) -> np.
     return np.minimum(left, right)
 
 
-FIX_SIGMA_M: dict[int, float] = {4: 0.02, 5: 0.30, 2: 0.8, 1: 2.0, 6: 5.0}
+FIX_SIGMA_M: dict[int, float] = {4: 0.02, 5: 0.30, 2: 0.8, 1: 2.0}
 """Typical 1-sigma horizontal position noise per GGA fix quality, metres (RTK fixed,
-RTK float, DGPS, autonomous, dead reckoning); other qualities count as autonomous."""
+RTK float, DGPS, autonomous); other usable qualities (3, PPS) count as autonomous."""
 
 
 def smooth_static_track(track: PlatformTrack, window_s: float = 600.0,

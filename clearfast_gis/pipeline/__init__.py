@@ -2,9 +2,25 @@
 
 ``process_survey`` runs the stages of ARCHITECTURE §2 in order; each finished stage is recorded
 in ``PRODUCTS/.clearfast/state.json`` so an interrupted run continues where it stopped.
+The chain's modules are imported on first use, so that :mod:`.options` (the defaults the
+command line and the QGIS plugin show) stays light to import.
 """
 
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
 from clearfast_gis.pipeline.options import ProcessOptions
-from clearfast_gis.pipeline.run import process_survey, redetect
+
+if TYPE_CHECKING:
+    from clearfast_gis.pipeline.run import process_survey, redetect
 
 __all__ = ["ProcessOptions", "process_survey", "redetect"]
+
+
+def __getattr__(name: str):
+    if name in ("process_survey", "redetect"):
+        from clearfast_gis.pipeline import run
+
+        return getattr(run, name)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

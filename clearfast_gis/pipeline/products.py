@@ -168,7 +168,7 @@ def write_anomaly_products(products: Path, ctx, survey, anomalies, records: list
         crs=crs)
     layers = {"anomalies": anomalies_layer, "suspects": suspects, "candidates": candidates,
               "markers": _markers_frame(survey, epsg, anomalies.markers), "footprint": footprint}
-    write_geopackage(products / "anomalies.gpkg", layers, default_styles(),
+    write_geopackage(products / "anomalies.gpkg", layers, default_styles(layers),
                      timestamp_s=float(survey.end_s))
 
     # report

@@ -45,14 +45,12 @@ from clearfast_gis.pipeline.options import MOSAIC_PARAMETERS, ProcessOptions
 from clearfast_gis.pipeline.products import base_manifest as _base_manifest
 from clearfast_gis.pipeline.products import write_anomaly_products, write_footprint_geojson
 from clearfast_gis.pipeline.resources import StageMeter, cpu_seconds
-from clearfast_gis.pipeline.state import RunState
+from clearfast_gis.pipeline.state import STATE_DIR, RunState
 from clearfast_gis.progress import NULL_PROGRESS, Progress
 from clearfast_gis.radiometry.stage import calibration_events, weather_at
 from clearfast_gis.registration import ConformalTransform, estimate_band_offsets
 from clearfast_gis.thermal.sitesoil import characterise, site_soil
 from clearfast_gis.timeutil import format_utc
-
-STATE_DIR = ".clearfast"
 
 
 def mosaic_rel(scan: int) -> str:
@@ -64,15 +62,17 @@ def _survey_epsg(survey, gnss) -> int:
     crs = survey.manifest.get("crs") or {}
     if crs.get("epsg"):
         return int(crs["epsg"])
-    ok = gnss.fix_quality > 0
+    ok = gnss.usable
     if not np.any(ok):
         raise InvalidInput("no GNSS fix to choose the UTM zone", survey.label("gnss"))
     i = int(np.flatnonzero(ok)[0])
     return utm_epsg_for(float(gnss.lat_deg[i]), float(gnss.lon_deg[i]))
 
 
-def _input_key(survey, options: ProcessOptions) -> str:
-    """Identity of the inputs (manifest, frame table, logs) and of the mosaic parameters."""
+def _input_key(survey, options: ProcessOptions, station_profile: str | Path | None = None
+               ) -> str:
+    """Identity of the inputs (manifest, frame table, logs, station profile) and of the mosaic
+    parameters."""
     import hashlib
 
     h = hashlib.sha256()
@@ -81,6 +81,10 @@ def _input_key(survey, options: ProcessOptions) -> str:
         p = survey.path(key)
         st = p.stat()
         h.update(f"{key}:{st.st_size}:{st.st_mtime_ns}".encode())
+    if station_profile is not None:
+        h.update(Path(station_profile).read_bytes())
+    elif "station_profile" in survey.manifest["files"]:
+        h.update(survey.path("station_profile").read_bytes())
     h.update(options.mosaic_key().encode())
     h.update(__version__.encode())
     return h.hexdigest()[:20]
@@ -103,11 +107,15 @@ def _pixel_size(survey, options: ProcessOptions) -> float:
     return MIN_DEFAULT_PIXEL_M
 
 
-def open_context(survey_path: str | Path, progress: Progress = NULL_PROGRESS):
-    """Read everything the chain needs from a survey folder (after validation)."""
+def open_context(survey_path: str | Path, progress: Progress = NULL_PROGRESS,
+                 station_profile: str | Path | None = None):
+    """Read everything the chain needs from a survey folder (after validation);
+    ``station_profile`` overrides the one ``survey.json`` names."""
     from clearfast_gis.survey import read_nmea, read_survey, read_toa5, validate_survey
+    from clearfast_gis.survey.nmea import gnss_checksums
+    from clearfast_gis.survey.station_profiles import read_station_profile
 
-    report = validate_survey(survey_path)
+    report = validate_survey(survey_path, station_profile=station_profile)
     if not report.valid:
         first = report.problems[0].line()
         more = f" (and {len(report.problems) - 1} more problems: run clearfast validate)" \
@@ -116,12 +124,16 @@ def open_context(survey_path: str | Path, progress: Progress = NULL_PROGRESS):
     for w in report.warnings:
         progress.message(f"warning: {w.line()}")
     survey = read_survey(survey_path)
-    gnss = read_nmea(survey.path("gnss"), fallback_date_s=survey.start_s)
+    gnss = read_nmea(survey.path("gnss"), fallback_date_s=survey.start_s,
+                     checksums=gnss_checksums(survey.manifest))
     epsg = _survey_epsg(survey, gnss)
     track = smooth_static_track(platform_track(
         gnss, epsg, float(survey.manifest["site"]["ground_altitude_m"]),
         source=survey.label("gnss")))
-    weather = read_toa5(survey.path("weather"))
+    if station_profile is not None:
+        survey.use_station_profile(read_station_profile(station_profile))
+    weather = read_toa5(survey.path("weather"), survey.label("weather"),
+                        survey.station_profile)
     events = calibration_events(survey)
     _check_blackbody_pairs(events, survey)
     ctx = SurveyContext(survey, survey.camera, track, events, weather,
@@ -465,7 +477,8 @@ def _scan_mosaics(job: _ScanJob, order: list[int], ref: int
 def process_survey(survey_path: str | Path, products: str | Path,
                    options: ProcessOptions | None = None, resume: bool = True,
                    progress: Progress = NULL_PROGRESS, until: str = "products",
-                   redo_anomalies: bool = False) -> dict:
+                   redo_anomalies: bool = False,
+                   station_profile: str | Path | None = None) -> dict:
     """Run the chain from a survey folder to a products folder.
 
     Parameters
@@ -481,6 +494,9 @@ def process_survey(survey_path: str | Path, products: str | Path,
     progress : Progress
     until : {"products", "mosaics"}
         Stop after the scan mosaics (``clearfast mosaic``) or run the whole chain.
+    station_profile : path, optional
+        Station profile of the weather and soil logs, instead of the one ``survey.json``
+        names (``files.station_profile``).
     redo_anomalies : bool
         Detect and characterise again even when the anomalies are up to date
         (``clearfast detect``).
@@ -495,18 +511,19 @@ def process_survey(survey_path: str | Path, products: str | Path,
     options = ProcessOptions() if options is None else options
     with kernels.use(options.kernels), serial_kernels():
         return _process(survey_path, Path(products), options, resume, progress, until,
-                        redo_anomalies)
+                        redo_anomalies, station_profile)
 
 
 def _process(survey_path: str | Path, products: Path, options: ProcessOptions, resume: bool,
-             progress: Progress, until: str, redo_anomalies: bool) -> dict:
+             progress: Progress, until: str, redo_anomalies: bool,
+             station_profile: str | Path | None = None) -> dict:
     """:func:`process_survey` once the kernel set is chosen."""
     t_all, cpu_all = time.perf_counter(), cpu_seconds()
     meter = StageMeter()
     with meter.stage("read_and_validate"):
-        ctx, epsg, report = open_context(survey_path, progress)
+        ctx, epsg, report = open_context(survey_path, progress, station_profile)
     survey = ctx.survey
-    key = _input_key(survey, options)
+    key = _input_key(survey, options, station_profile)
     state = RunState(products, key if resume else key + f"-fresh-{time.time_ns()}")
     if not resume:
         state.units = {}
@@ -625,7 +642,8 @@ def _anomaly_stage(ctx, survey, products: Path, options: ProcessOptions, state: 
     with meter.stage("characterisation"):
         if options.invert and feats:
             forcing = forcing_from_weather(ctx.weather)
-            soil_log = read_soil_log(survey.path("soil"), survey.label("soil"))
+            soil_log = read_soil_log(survey.path("soil"), survey.label("soil"),
+                                     survey.station_profile)
             outside = labels == 0
             background = np.array([np.nanmedian(img[outside]) for img in stack[:, 0]])
             soil, alpha, sigma = site_soil(soil_log, forcing, times, background)

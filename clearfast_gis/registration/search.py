@@ -34,7 +34,10 @@ def gradient_magnitude(image: np.ndarray, margin_px: int = 2) -> np.ndarray:
     filled = np.where(valid, image, np.nanmean(image) if valid.any() else 0.0).astype(np.float32)
     gx = cv2.Sobel(filled, cv2.CV_32F, 1, 0, ksize=3, borderType=cv2.BORDER_REFLECT)
     gy = cv2.Sobel(filled, cv2.CV_32F, 0, 1, ksize=3, borderType=cv2.BORDER_REFLECT)
-    mag = cv2.magnitude(gx, gy)
+    # not cv2.magnitude: its IPP path rounds the last bit differently depending on the
+    # buffers' memory alignment, which made two runs of the chain register differently;
+    # numpy's elementwise operations are correctly rounded wherever the data sit
+    mag = np.sqrt(gx * gx + gy * gy)
     core = valid.astype(np.uint8)
     if margin_px > 0:
         core = cv2.erode(core, np.ones((2 * margin_px + 1,) * 2, np.uint8),

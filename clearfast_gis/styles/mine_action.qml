@@ -246,7 +246,7 @@
   </renderer-v2>
   <labeling type="simple">
     <settings calloutType="simple">
-      <text-style capitalization="0" fontSize="7" fontSizeUnit="Point" fontStrikeout="0" namedStyle="" fontKerning="1" fontSizeMapUnitScale="3x:0,0,0,0,0,0" useSubstitutions="0" multilineHeight="1" fieldName="hazard_id" textColor="20,20,20,255" isExpression="0" fontFamily="DejaVu LGC Sans" legendString="Aa" fontUnderline="0" textOpacity="1" fontItalic="0" previewBkgrdColor="255,255,255,255" fontWeight="50" blendMode="0" allowHtml="0" textOrientation="horizontal" fontWordSpacing="0" fontLetterSpacing="0">
+      <text-style capitalization="0" fontSize="7" fontSizeUnit="Point" fontStrikeout="0" namedStyle="" fontKerning="1" fontSizeMapUnitScale="3x:0,0,0,0,0,0" useSubstitutions="0" multilineHeight="1" fieldName="imsma_id" textColor="20,20,20,255" isExpression="0" fontFamily="DejaVu LGC Sans" legendString="Aa" fontUnderline="0" textOpacity="1" fontItalic="0" previewBkgrdColor="255,255,255,255" fontWeight="50" blendMode="0" allowHtml="0" textOrientation="horizontal" fontWordSpacing="0" fontLetterSpacing="0">
         <families/>
         <text-buffer bufferSizeMapUnitScale="3x:0,0,0,0,0,0" bufferOpacity="1" bufferDraw="1" bufferSizeUnits="MM" bufferBlendMode="0" bufferColor="255,255,255,255" bufferNoFill="1" bufferSize="0.80000000000000004" bufferJoinStyle="128"/>
         <text-mask maskJoinStyle="128" maskEnabled="0" maskType="0" maskSizeMapUnitScale="3x:0,0,0,0,0,0" maskSize="1.5" maskSizeUnits="MM" maskedSymbolLayers="" maskOpacity="1"/>
@@ -344,7 +344,7 @@
   <featureBlendMode>0</featureBlendMode>
   <layerOpacity>1</layerOpacity>
   <fieldConfiguration>
-    <field configurationFlags="None" name="hazard_id">
+    <field configurationFlags="None" name="imsma_id">
       <editWidget type="">
         <config>
           <Option/>
@@ -381,28 +381,28 @@
     </field>
   </fieldConfiguration>
   <aliases>
-    <alias field="hazard_id" index="0" name=""/>
+    <alias field="imsma_id" index="0" name=""/>
     <alias field="source_anomaly_id" index="1" name=""/>
     <alias field="class_cue" index="2" name=""/>
     <alias field="status" index="3" name=""/>
     <alias field="confidence" index="4" name=""/>
   </aliases>
   <defaults>
-    <default field="hazard_id" applyOnUpdate="0" expression=""/>
+    <default field="imsma_id" applyOnUpdate="0" expression=""/>
     <default field="source_anomaly_id" applyOnUpdate="0" expression=""/>
     <default field="class_cue" applyOnUpdate="0" expression=""/>
     <default field="status" applyOnUpdate="0" expression=""/>
     <default field="confidence" applyOnUpdate="0" expression=""/>
   </defaults>
   <constraints>
-    <constraint field="hazard_id" notnull_strength="0" unique_strength="0" exp_strength="0" constraints="0"/>
+    <constraint field="imsma_id" notnull_strength="0" unique_strength="0" exp_strength="0" constraints="0"/>
     <constraint field="source_anomaly_id" notnull_strength="0" unique_strength="0" exp_strength="0" constraints="0"/>
     <constraint field="class_cue" notnull_strength="0" unique_strength="0" exp_strength="0" constraints="0"/>
     <constraint field="status" notnull_strength="0" unique_strength="0" exp_strength="0" constraints="0"/>
     <constraint field="confidence" notnull_strength="0" unique_strength="0" exp_strength="0" constraints="0"/>
   </constraints>
   <constraintExpressions>
-    <constraint field="hazard_id" desc="" exp=""/>
+    <constraint field="imsma_id" desc="" exp=""/>
     <constraint field="source_anomaly_id" desc="" exp=""/>
     <constraint field="class_cue" desc="" exp=""/>
     <constraint field="status" desc="" exp=""/>

@@ -21,6 +21,8 @@ from clearfast_gis.survey._text import (
     to_float,
     to_time,
 )
+from clearfast_gis.survey.station_profiles import StationProfile, unit_conversion
+from clearfast_gis.survey.toa5 import toa5_header_lines
 from clearfast_gis.timeutil import format_utc
 
 _SOIL_COL = re.compile(r"^T_(\d+(?:\.\d+)?)m_C$")
@@ -90,8 +92,13 @@ def _data_rows(text: str, label: str) -> tuple[list[str], list[tuple[int, list[s
     return [h.strip() for h in numbered[0][1]], numbered[1:]
 
 
-def parse_soil_log(text: str, label: str = "soil.csv") -> SoilLog:
-    """Parse ``time_utc,T_<depth>m_C,...`` CSV text into a :class:`SoilLog` sorted by depth."""
+def parse_soil_log(text: str, label: str = "soil.csv",
+                   profile: StationProfile | None = None) -> SoilLog:
+    """Parse ``time_utc,T_<depth>m_C,...`` CSV text, or a logger's TOA5 thermocouple table
+    with the depths of its columns in a station profile (``soil.depths``), into a
+    :class:`SoilLog` sorted by depth, degrees C."""
+    if text.lstrip('\ufeff"').startswith("TOA5"):
+        return _parse_soil_toa5(text, label, profile)
     header, rows = _data_rows(text, label)
     if not header or header[0] != "time_utc":
         raise InvalidInput("first column must be 'time_utc'", label, "line 1")
@@ -117,10 +124,68 @@ def parse_soil_log(text: str, label: str = "soil.csv") -> SoilLog:
     return SoilLog(time_s=t, depth_m=np.asarray(depths)[order], temp_c=temp[:, order])
 
 
-def read_soil_log(path: str | os.PathLike, label: str | None = None) -> SoilLog:
-    """Read a soil thermocouple CSV file (see :func:`parse_soil_log`)."""
+#: soil temperature columns whose name states the depth (``Tsoil_5cm_Avg``, ``TC_10cm``,
+#: ``SoilT_0.05m``, ``T_0.050m_C``): recognised without a profile
+_DEPTH_NAME = re.compile(r"^(?:t|ts|tsoil|soilt|soiltemp|tc|temp)_?(\d+(?:\.\d+)?)(cm|mm|m)"
+                         r"(?:_c)?(?:_avg)?$", re.IGNORECASE)
+_DEPTH_UNIT_M = {"cm": 0.01, "mm": 0.001, "m": 1.0}
+
+
+def _depths_from_names(names: list[str]) -> dict[str, float]:
+    """Columns whose name states a depth (see :data:`_DEPTH_NAME`) -> depth, metres."""
+    out = {}
+    for n in names:
+        m = _DEPTH_NAME.match(n.strip())
+        if m:
+            out[n.strip()] = float(m.group(1)) * _DEPTH_UNIT_M[m.group(2).lower()]
+    return out
+
+
+def _parse_soil_toa5(text: str, label: str, profile: StationProfile | None) -> SoilLog:
+    """A TOA5 thermocouple table: columns and depths from the station profile, else from
+    column names that state the depth."""
+    rows = csv_rows(text, label)
+    names, units = toa5_header_lines(rows, label)
+    depths = profile.soil_columns if profile is not None else None
+    if not depths:
+        depths = _depths_from_names(names)
+        if len(set(depths.values())) != len(depths):
+            raise InvalidInput("two columns have the same depth", label, "line 2")
+    if not depths:
+        raise InvalidInput("a TOA5 table as the soil log needs the depth of each thermocouple "
+                           f"column; the file has columns {', '.join(names)}; give them in a "
+                           'station profile: "soil": {"unit": "deg C", "depths": [{"column": '
+                           '"<name>", "depth_m": 0.05}, ...]} (docs/acquire.md)', label,
+                           "line 2")
+    lower = {n.lower(): i for i, n in enumerate(names)}
+    absent = [c for c in depths if c.lower() not in lower]
+    if absent:
+        raise InvalidInput(f"profile column(s) {', '.join(absent)} not in the file; the file "
+                           f"has columns {', '.join(names)}", label, "line 2")
+    cols = sorted(depths, key=lambda c: depths[c])
+    idx = [lower[c.lower()] for c in cols]
+    soil_unit = profile.soil_unit if profile is not None else None
+    conv = [unit_conversion(soil_unit or (units[i] if i < len(units) else ""),
+                            "soil_temp_c", label, f"line 3: {names[i]}") for i in idx]
+    it = names.index("TIMESTAMP")
+    data = rows[4:]
+    t = np.empty(len(data))
+    temp = np.empty((len(data), len(cols)))
+    for k, row in enumerate(data):
+        line = k + 5
+        t[k] = to_time(cell(row, it, label, line, "TIMESTAMP"), label, line, "TIMESTAMP")
+        for j, (i, (scale, offset)) in enumerate(zip(idx, conv, strict=True)):
+            raw = to_float(cell(row, i, label, line, names[i]), label, line, names[i],
+                           allow_nan=True)
+            temp[k, j] = scale * raw + offset
+    return SoilLog(time_s=t, depth_m=np.array([depths[c] for c in cols]), temp_c=temp)
+
+
+def read_soil_log(path: str | os.PathLike, label: str | None = None,
+                  profile: StationProfile | None = None) -> SoilLog:
+    """Read a soil thermocouple log (see :func:`parse_soil_log`)."""
     label = str(path) if label is None else label
-    return parse_soil_log(read_text(path, label), label)
+    return parse_soil_log(read_text(path, label), label, profile)
 
 
 def _fmt(v: float) -> str:

@@ -97,6 +97,19 @@ class Survey:
         return camera_from_manifest(self.manifest["camera"])
 
     @functools.cached_property
+    def station_profile(self):
+        """The station profile ``files.station_profile`` names (a
+        :class:`~clearfast_gis.survey.station_profiles.StationProfile`), or None."""
+        from clearfast_gis.survey.stations import survey_station_profile
+
+        return survey_station_profile(self.root, self.manifest)
+
+    def use_station_profile(self, profile) -> None:
+        """Read the weather and soil logs with ``profile`` (a profile given on the command
+        line) instead of the one ``survey.json`` names."""
+        self.__dict__["station_profile"] = profile
+
+    @functools.cached_property
     def mission(self) -> dict:
         """The validated ``mission.json``."""
         return read_mission(self.path("mission"), self.label("mission"))

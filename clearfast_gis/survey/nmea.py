@@ -1,16 +1,17 @@
 """NMEA 0183 GNSS logs: GGA (position, fix quality), RMC and ZDA (date and time) sentences.
 
-Parsing uses pynmea2 with checksum verification; lines with a wrong checksum are counted and
-skipped, as are lines that are not NMEA. Each GGA sentence gives one epoch; its date comes from
-the RMC or ZDA sentence of the same epoch, else from the last known date (rolling over
-midnight), else from a fallback date (the survey start).
+Parsing uses pynmea2 with checksum verification (line handling of real receivers in
+:mod:`clearfast_gis.survey.nmea_lines`); lines with a wrong or missing checksum are counted and
+skipped, as are lines that are not NMEA. The GGA sentences of one time (one per constellation
+on some receivers) give one epoch, the best fix; its date comes from the valid RMC or ZDA
+sentence of the same epoch, else from the last known date (rolling over midnight), else from a
+fallback date (the survey start).
 """
 
 from __future__ import annotations
 
 import math
 import os
-import re
 from collections.abc import Iterable
 from dataclasses import dataclass, field
 from datetime import UTC, datetime
@@ -21,6 +22,18 @@ import pynmea2
 from clearfast_gis.atomic import write_text
 from clearfast_gis.errors import InvalidInput
 from clearfast_gis.survey._text import read_text
+from clearfast_gis.survey.nmea_lines import (
+    CHECKSUM_MODES,
+    FIELD_ERRORS,
+    USABLE_FIX_QUALITIES,
+    classify_line,
+    fix_rank,
+    gga_fields,
+    gga_has_time,
+    is_void_rmc,
+    sentence_time,
+    split_lines,
+)
 
 #: GGA fix quality codes
 FIX_NONE, FIX_GPS, FIX_DGPS, FIX_RTK_FIXED, FIX_RTK_FLOAT = 0, 1, 2, 4, 5
@@ -154,7 +167,8 @@ class GnssLog:
     alt_m : float64 (N,)
         GGA antenna altitude above mean sea level, metres (NaN without a fix).
     fix_quality : int8 (N,)
-        GGA fix quality (4 = RTK fixed, 5 = RTK float, 1/2 = GPS/DGPS, 0 = none).
+        GGA fix quality (4 = RTK fixed, 5 = RTK float, 1/2/3 = GPS/DGPS/PPS, 0 = none;
+        6/7/8 = dead reckoning/manual/simulator are kept as reported, with NaN position).
     n_sats : int16 (N,)
         Satellites in use.
     hdop : float64 (N,)
@@ -163,6 +177,18 @@ class GnssLog:
         Non-blank lines in the file.
     bad_checksum_lines, unparseable_lines : tuple of int
         1-based line numbers skipped for a wrong checksum or for not being NMEA.
+    no_checksum_lines : tuple of int
+        Lines skipped for having no checksum (while checksums are required).
+    untimed_gga_lines : tuple of int
+        GGA sentences with an empty time field (a receiver before its first fix), skipped.
+    void_rmc_lines : tuple of int
+        RMC sentences with status V (void), not used for dating.
+    implausible_date_lines : tuple of int
+        RMC/ZDA sentences dated too far from the survey start, not used for dating.
+    prefixed_lines : tuple of int
+        Lines whose sentence was preceded by other bytes (skipped; the sentence was read).
+    merged_epochs : int
+        GGA sentences merged into an epoch of the same time (one per constellation).
     """
 
     time_s: np.ndarray
@@ -175,6 +201,12 @@ class GnssLog:
     n_lines: int = 0
     bad_checksum_lines: tuple[int, ...] = field(default=())
     unparseable_lines: tuple[int, ...] = field(default=())
+    no_checksum_lines: tuple[int, ...] = field(default=())
+    untimed_gga_lines: tuple[int, ...] = field(default=())
+    void_rmc_lines: tuple[int, ...] = field(default=())
+    implausible_date_lines: tuple[int, ...] = field(default=())
+    prefixed_lines: tuple[int, ...] = field(default=())
+    merged_epochs: int = 0
 
     def __len__(self) -> int:
         return int(self.time_s.shape[0])
@@ -189,123 +221,42 @@ class GnssLog:
         """Number of lines skipped for not being NMEA."""
         return len(self.unparseable_lines)
 
+    @property
+    def usable(self) -> np.ndarray:
+        """True for epochs with a position fix (quality 1-5 and finite coordinates)."""
+        return np.isin(self.fix_quality, USABLE_FIX_QUALITIES) & np.isfinite(self.lat_deg)
+
     def fix_counts(self) -> dict[int, int]:
         """Number of epochs per fix quality."""
         q, n = np.unique(self.fix_quality, return_counts=True)
         return {int(a): int(b) for a, b in zip(q, n, strict=True)}
 
 
-_TIME = re.compile(r"^([01]\d|2[0-3])([0-5]\d)([0-5]\d|60)(\.\d{1,9})?$")
-_DATE = re.compile(r"^(\d\d)(\d\d)(\d\d)$")
-
-
-def _tod_field(text: str) -> float:
-    """``hhmmss[.sss]`` to seconds of the day; ValueError if malformed."""
-    m = _TIME.match(text)
-    if not m:
-        raise ValueError(f"bad time {text!r}")
-    frac = float(m.group(4)) if m.group(4) else 0.0
-    return int(m.group(1)) * 3600.0 + int(m.group(2)) * 60.0 + int(m.group(3)) + frac
-
-
-def _date_field(text: str) -> float:
-    """RMC ``ddmmyy`` to the epoch second of that day's midnight (years 2000-2099)."""
-    m = _DATE.match(text)
-    if not m:
-        raise ValueError(f"bad date {text!r}")
-    d, mo, y = (int(g) for g in m.groups())
-    return datetime(2000 + y, mo, d, tzinfo=UTC).timestamp()
-
-
-def _zda_date(day: str, month: str, year: str) -> float:
-    """ZDA day, month and four-digit year fields to the epoch second of that day's midnight."""
-    if not (day.isdigit() and month.isdigit() and len(year) == 4 and year.isdigit()):
-        raise ValueError(f"bad date {day!r} {month!r} {year!r}")
-    return datetime(int(year), int(month), int(day), tzinfo=UTC).timestamp()
-
-
-def sentence_time(msg: pynmea2.NMEASentence) -> tuple[float, float] | None:
-    """Time of day and date of an RMC or ZDA sentence: ``(tod_s, midnight_s)``.
-
-    ``tod_s`` is seconds since midnight UTC, ``midnight_s`` the epoch second of that day's
-    midnight (so the UTC epoch is their sum). None for other sentences.
-
-    Raises
-    ------
-    ValueError
-        For an RMC or ZDA sentence with a malformed time or date.
-    """
-    d = msg.data
-    if isinstance(msg, pynmea2.RMC):
-        return _tod_field(d[0]), _date_field(d[8])
-    if isinstance(msg, pynmea2.ZDA):
-        return _tod_field(d[0]), _zda_date(d[1], d[2], d[3])
-    return None
-
-
-def gga_fields(msg: pynmea2.GGA) -> tuple[float, tuple]:
-    """The epoch of a GGA sentence: ``(tod_s, (lat_deg, lon_deg, alt_m, quality, n_sats,
-    hdop))``; position NaN and quality 0 when the epoch has no usable fix.
-
-    Raises
-    ------
-    ValueError
-        For a malformed time, fix quality or satellite count.
-    """
-    d = msg.data
-    tod = _tod_field(d[0])
-    q = int(d[5]) if d[5] else 0
-    if not 0 <= q <= 9:
-        raise ValueError("fix quality")
-    lat = _coord(d[1], d[2], 2, 90.0)
-    lon = _coord(d[3], d[4], 3, 180.0)
-    alt = _num(d[8])
-    if q == 0 or math.isnan(lat) or math.isnan(lon):
-        lat = lon = alt = math.nan  # no usable fix in this epoch
-        q = 0
-    ns = int(d[6]) if d[6] else 0
-    if not 0 <= ns <= 999:
-        raise ValueError("satellites")
-    return tod, (lat, lon, alt, q, ns, _num(d[7]))
-
-
-#: parse errors of a sentence pynmea2 accepted but whose fields are malformed
-FIELD_ERRORS = (ValueError, TypeError, AttributeError, IndexError, OverflowError)
-
-
-def _num(text: str) -> float:
-    try:
-        v = float(text)
-    except (TypeError, ValueError):
-        return math.nan
-    return v if math.isfinite(v) else math.nan
-
-
-def _coord(value: str, hemi: str, deg_digits: int, limit: float) -> float:
-    if not value or hemi not in ("N", "S", "E", "W"):
-        return math.nan
-    try:
-        d = int(value[:deg_digits])
-        m = float(value[deg_digits:])
-    except ValueError:
-        return math.nan
-    if not (0.0 <= m < 60.0) or value[:deg_digits].strip() != value[:deg_digits]:
-        return math.nan
-    v = d + m / 60.0
-    if v > limit:
-        return math.nan
-    return -v if hemi in ("S", "W") else v
+_PARSED: dict[tuple, GnssLog] = {}
+"""The last logs parsed (a survey's log is parsed by the validation, then by the chain)."""
 
 
 _PARSED: dict[tuple, GnssLog] = {}
 """The last logs parsed (a survey's log is parsed by the validation, then by the chain)."""
 
+#: an RMC or ZDA date farther than this from the survey's own start is refused (a receiver's
+#: cold-start or week-rollover date), seconds
+MAX_DATE_OFFSET_S = 7 * 86400.0
 
-def parse_nmea(text: str, label: str = "gnss.nmea", fallback_date_s: float | None = None
-               ) -> GnssLog:
+#: GGA sentences whose times differ by less than this are one epoch, seconds
+SAME_EPOCH_S = 1e-3
+
+_HALF_DAY_S = 43200.0
+
+
+def parse_nmea(text: str, label: str = "gnss.nmea", fallback_date_s: float | None = None,
+               checksums: str = "required") -> GnssLog:
     """Parse NMEA 0183 text into a :class:`GnssLog`.
 
-    The result of the same text and ``fallback_date_s`` is remembered (the last two logs), so
+    What real receivers write is accepted (:mod:`clearfast_gis.survey.nmea_lines`): junk
+    before a sentence, ``$$`` starts, CR-only line ends, one GGA per constellation per epoch
+    (merged into one epoch keeping the best fix), void RMC (never used for dating), leap
+    seconds. The result of the same text and options is remembered (the last two logs), so
     validating a survey and then processing it parses its 24 h log once; treat it as
     read-only.
 
@@ -317,102 +268,175 @@ def parse_nmea(text: str, label: str = "gnss.nmea", fallback_date_s: float | Non
         File name used in error messages.
     fallback_date_s : float, optional
         Any UTC epoch second of the first day of the log (the survey start); used for GGA
-        epochs before the first RMC or ZDA sentence when none follows in the same epoch.
+        epochs before the first RMC or ZDA sentence when none follows in the same epoch, as
+        the pivot of two-digit RMC years, and to refuse dates more than
+        :data:`MAX_DATE_OFFSET_S` away from it.
+    checksums : {"required", "optional"}
+        ``"optional"`` accepts sentences without a checksum (receivers that send none);
+        present checksums are always verified.
 
     Raises
     ------
     InvalidInput
-        When the text holds no GGA sentence, or epochs cannot be dated.
+        When the text holds no timed GGA sentence (the message names the cause: missing or
+        failing checksums, untimed GGA, no GGA at all), or epochs cannot be dated.
     """
-    key = (len(text), hash(text), fallback_date_s)
+    if checksums not in CHECKSUM_MODES:
+        raise ValueError(f"checksums must be one of {CHECKSUM_MODES}, got {checksums!r}")
+    key = (len(text), hash(text), fallback_date_s, checksums)
     if key not in _PARSED:
-        log = _parse_nmea(text, label, fallback_date_s)
+        log = _parse_nmea(text, label, fallback_date_s, checksums)
         while len(_PARSED) >= 2:
             _PARSED.pop(next(iter(_PARSED)))
         _PARSED[key] = log
     return _PARSED[key]
 
 
-def _parse_nmea(text: str, label: str, fallback_date_s: float | None) -> GnssLog:
+def gnss_checksums(manifest: dict) -> str:
+    """The checksum mode of a survey's NMEA log: survey.json ``gnss.checksums``
+    (``"required"`` unless the survey states ``"optional"``)."""
+    gnss = manifest.get("gnss") if isinstance(manifest, dict) else None
+    mode = gnss.get("checksums") if isinstance(gnss, dict) else None
+    return mode if mode in CHECKSUM_MODES else "required"
+
+
+def _no_epoch_cause(n_lines: int, n_sentences: int, binary: int,
+                    skipped: dict[str, list[int]]) -> str:
+    """The real reason a log gave no GGA epoch, for the error message."""
+    nocs, bad = skipped["no_checksum"], skipped["bad_checksum"]
+    if nocs and n_sentences == 0 and not bad:
+        return (f"no sentence has a checksum ({len(nocs)} line(s), first line {nocs[0]}); if "
+                "the receiver sends none, accept them with survey.json "
+                '"gnss": {"checksums": "optional"}')
+    if bad and n_sentences == 0:
+        return (f"every sentence fails its checksum ({len(bad)} line(s), first line "
+                f"{bad[0]}): wrong baud rate, or a log altered after recording")
+    if skipped["bad_gga"]:
+        return (f"every GGA sentence fails its checksum ({len(skipped['bad_gga'])} line(s), "
+                f"first line {skipped['bad_gga'][0]}; other sentences pass): the receiver "
+                "computes GGA checksums wrongly, or the log was altered")
+    if nocs and not skipped["gga"]:
+        return (f"no GGA sentence has a checksum ({len(nocs)} line(s) without one, first "
+                f"line {nocs[0]}); if the receiver sends none, accept them with survey.json "
+                '"gnss": {"checksums": "optional"}')
+    if skipped["untimed"]:
+        return (f"{len(skipped['untimed'])} GGA sentence(s) but none has a time, first line "
+                f"{skipped['untimed'][0]} (the receiver never had a fix)")
+    extra = ""
+    if nocs or bad:
+        extra = (f"; {len(bad)} line(s) with a wrong checksum, {len(nocs)} without one were "
+                 "skipped")
+    what = "binary data?" if binary > n_lines // 2 else "not a GNSS position log?"
+    return (f"no GGA sentence with a time among {n_lines} line(s) ({n_sentences} NMEA "
+            f"sentence(s)){extra}: {what}")
+
+
+def _parse_nmea(text: str, label: str, fallback_date_s: float | None,
+                checksums: str) -> GnssLog:
     """:func:`parse_nmea` without the memory of recent logs."""
-    records: list[tuple] = []  # (kind, tod_s, payload)
-    bad_cs: list[int] = []
-    junk: list[int] = []
-    n_lines = 0
-    # lines end at LF (CR LF on the wire), as the logger splits them: control characters of
-    # line noise (CR, FF, VT, ...) stay inside their line
-    for lineno, raw in enumerate(text.split("\n"), start=1):
-        line = raw.strip()
-        if not line:
+    known = fallback_date_s is not None and math.isfinite(fallback_date_s)
+    pivot = datetime.fromtimestamp(fallback_date_s, tz=UTC).year if known else None
+    records: list[tuple] = []  # (tod_s, kind, payload)
+    skipped: dict[str, list[int]] = {k: [] for k in (
+        "bad_checksum", "no_checksum", "junk", "untimed", "void", "implausible", "prefixed",
+        "bad_gga", "gga")}
+    binary = 0
+    n_lines = n_sentences = 0
+    for lineno, raw in enumerate(split_lines(text), start=1):
+        if not raw.strip():
             continue
         n_lines += 1
-        if not line.startswith("$"):
-            junk.append(lineno)
+        verdict = classify_line(raw, checksums)
+        if verdict.prefixed:
+            skipped["prefixed"].append(lineno)
+        if verdict.sentence_type == "GGA":
+            skipped["gga"].append(lineno)
+        if verdict.kind != "ok":
+            skipped[verdict.kind].append(lineno)
+            if verdict.kind == "bad_checksum" and verdict.sentence_type == "GGA":
+                skipped["bad_gga"].append(lineno)
+            binary += "\ufffd" in raw
             continue
-        try:
-            msg = pynmea2.parse(line, check=True)
-        except pynmea2.ChecksumError:
-            bad_cs.append(lineno)
-            continue
-        except (pynmea2.ParseError, pynmea2.SentenceTypeError, ValueError, TypeError,
-                AttributeError, IndexError):
-            junk.append(lineno)
-            continue
+        msg = verdict.msg
+        n_sentences += 1
         try:
             if isinstance(msg, pynmea2.GGA):
+                if not gga_has_time(msg):
+                    skipped["untimed"].append(lineno)
+                    continue
                 tod, payload = gga_fields(msg)
-                records.append(("GGA", tod, payload))
-            elif (when := sentence_time(msg)) is not None:
-                records.append(("DATE", *when))
+                records.append((tod, "GGA", payload))
+            elif is_void_rmc(msg):
+                skipped["void"].append(lineno)
+            elif (when := sentence_time(msg, pivot)) is not None:
+                if known and abs(sum(when) - fallback_date_s) > MAX_DATE_OFFSET_S:
+                    skipped["implausible"].append(lineno)
+                    continue
+                records.append((when[0], "DATE", when[1]))
         except FIELD_ERRORS:
-            junk.append(lineno)
-            continue
-    ggas = [i for i, r in enumerate(records) if r[0] == "GGA"]
-    if not ggas:
-        raise InvalidInput("no GGA sentence with a time (not an NMEA GNSS log?)", label)
+            skipped["junk"].append(lineno)
+    if not any(r[1] == "GGA" for r in records):
+        raise InvalidInput(_no_epoch_cause(n_lines, n_sentences, binary, skipped), label)
 
-    first_dated = next((r for r in records if r[0] == "DATE"), None)
+    first_dated = next((r for r in records if r[1] == "DATE"), None)
     cols: list[tuple] = []
     day_s: float | None = None
-    last_tod = None
-    for i in ggas:
-        kind, tod, payload = records[i]
-        own = None
-        for j in (i + 1, i - 1, i + 2, i - 2):
-            if 0 <= j < len(records) and records[j][0] == "DATE" and \
-                    abs(records[j][1] - tod) < 1e-3:
-                own = records[j][2]
-                break
+    last_tod = 0.0
+    n_merged = 0
+    k = 0
+    while k < len(records):
+        tod = records[k][0]
+        end = k + 1
+        while end < len(records) and abs(records[end][0] - tod) < SAME_EPOCH_S:
+            end += 1
+        block = records[k:end]
+        k = end
+        own = next((r[2] for r in block if r[1] == "DATE"), None)
+        ggas = [r[2] for r in block if r[1] == "GGA"]
         if own is not None:
             day_s = own
+        elif not ggas:
+            continue
         elif day_s is not None:
-            if last_tod is not None and tod < last_tod - 43200.0:
+            if tod < last_tod - _HALF_DAY_S:
                 day_s += 86400.0
+            elif tod > last_tod + _HALF_DAY_S:
+                day_s -= 86400.0
         elif first_dated is not None:
-            day_s = first_dated[2] - (86400.0 if tod > first_dated[1] + 43200.0 else 0.0)
-        elif fallback_date_s is not None and math.isfinite(fallback_date_s):
+            day_s = first_dated[2] - (86400.0 if tod > first_dated[0] + _HALF_DAY_S else 0.0)
+        elif known:
             day_s = math.floor(fallback_date_s / 86400.0) * 86400.0
         else:
-            raise InvalidInput("no RMC or ZDA sentence gives the date and no survey start date "
-                               "is known", label)
+            raise InvalidInput(
+                f"no valid RMC or ZDA sentence gives the date ({len(skipped['void'])} void "
+                f"RMC, {len(skipped['implausible'])} implausible date(s)) and no survey start "
+                "date is known", label)
         last_tod = tod
-        cols.append((day_s + tod, *payload))
+        if ggas:
+            best = min(ggas, key=lambda p: fix_rank(p[3], p[4]))
+            n_merged += len(ggas) - 1
+            cols.append((day_s + tod, *best))
     arr = np.array(cols, dtype=np.float64).reshape(-1, 7)
     return GnssLog(
         time_s=arr[:, 0].copy(), lat_deg=arr[:, 1].copy(), lon_deg=arr[:, 2].copy(),
         alt_m=arr[:, 3].copy(), fix_quality=arr[:, 4].astype(np.int8),
         n_sats=arr[:, 5].astype(np.int16), hdop=arr[:, 6].copy(), n_lines=n_lines,
-        bad_checksum_lines=tuple(bad_cs), unparseable_lines=tuple(junk),
+        bad_checksum_lines=tuple(skipped["bad_checksum"]),
+        unparseable_lines=tuple(skipped["junk"]),
+        no_checksum_lines=tuple(skipped["no_checksum"]),
+        untimed_gga_lines=tuple(skipped["untimed"]), void_rmc_lines=tuple(skipped["void"]),
+        implausible_date_lines=tuple(skipped["implausible"]),
+        prefixed_lines=tuple(skipped["prefixed"]), merged_epochs=n_merged,
     )
 
 
 def read_nmea(path: str | os.PathLike, fallback_date_s: float | None = None,
-              label: str | None = None) -> GnssLog:
+              label: str | None = None, checksums: str = "required") -> GnssLog:
     """Read an NMEA 0183 log file (see :func:`parse_nmea`); bytes that are not text (line
-    noise recorded by the logger) make their line unparseable, not the file unreadable."""
+    noise, a binary protocol mixed with NMEA) become U+FFFD and are skipped with the junk."""
     label = str(path) if label is None else label
-    return parse_nmea(read_text(path, label, errors="replace"), label, fallback_date_s)
-
+    return parse_nmea(read_text(path, label, errors="replace"), label, fallback_date_s,
+                      checksums)
 
 def gnss_sentences(log: GnssLog, talker: str = "GP") -> list[str]:
     """GGA and RMC sentences (in that order) for every epoch of ``log``."""

@@ -15,7 +15,7 @@ from typing import Any
 import jsonschema
 
 #: schema names in ``clearfast_gis/schemas`` (``<name>.schema.json``)
-SCHEMA_NAMES = ("survey", "mission", "frames", "blackbody_frames", "setup")
+SCHEMA_NAMES = ("survey", "mission", "frames", "blackbody_frames", "setup", "station_profile")
 
 
 @functools.cache

@@ -147,3 +147,27 @@ def make_minimal_survey(root: str | os.PathLike, n_scans: int = 2, n_positions: 
                                                 np.array([33.3601, 33.3603]),
                                                 ("corner stake", "lane marker, north")))
     return root
+
+
+def pynmea2_gga_epochs(path: str | os.PathLike) -> dict[float, list[tuple[int, float, float, int]]]:
+    """An independent reading of a real receiver log, for comparisons: pynmea2's GGA
+    sentences with a time, cut at each line's last ``$`` (lines split at LF or CR), checksums
+    checked. Returns time of day (s, 3 decimals) -> [(quality, lat_deg, lon_deg, n_sats)]."""
+    import pynmea2
+
+    out: dict[float, list] = {}
+    text = Path(path).read_bytes().decode("utf-8", "replace")
+    for raw in text.replace("\r", "\n").split("\n"):
+        line = raw.strip()
+        if "$" not in line:
+            continue
+        try:
+            msg = pynmea2.parse(line[line.rfind("$"):], check=True)
+        except (pynmea2.ParseError, pynmea2.ChecksumError, ValueError, AttributeError):
+            continue
+        if isinstance(msg, pynmea2.GGA) and msg.timestamp is not None:
+            ts = msg.timestamp
+            tod = round(ts.hour * 3600 + ts.minute * 60 + ts.second + ts.microsecond * 1e-6, 3)
+            out.setdefault(tod, []).append((int(msg.gps_qual or 0), msg.latitude,
+                                            msg.longitude, int(msg.num_sats or 0)))
+    return out

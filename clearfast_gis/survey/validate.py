@@ -19,10 +19,12 @@ from clearfast_gis.survey._text import read_text
 from clearfast_gis.survey.logs import parse_blackbody_log, parse_markers, parse_soil_log
 from clearfast_gis.survey.manifest import manifest_problems, parse_json, resolve_inside
 from clearfast_gis.survey.model import MANIFEST_NAME
-from clearfast_gis.survey.nmea import FIX_RTK_FIXED, FIX_RTK_FLOAT, parse_nmea
+from clearfast_gis.survey.nmea import FIX_RTK_FIXED, FIX_RTK_FLOAT, gnss_checksums, parse_nmea
+from clearfast_gis.survey.plausibility import check_series
+from clearfast_gis.survey.stations import PROFILE_KEY, survey_station_profile
 from clearfast_gis.survey.tables import parse_blackbody_frames_table, parse_frames_table
 from clearfast_gis.survey.tiff import tiff_info
-from clearfast_gis.survey.toa5 import parse_toa5
+from clearfast_gis.survey.toa5 import parse_weather_table
 from clearfast_gis.timeutil import format_utc, parse_utc
 
 #: fewer blackbody frames than this per blackbody and event is reported (paper §3.3)
@@ -142,8 +144,8 @@ class _Checker:
 
 
 def validate_survey(path: str | os.PathLike, gnss_gap_s: float = 10.0,
-                    weather_gap_s: float = 180.0, coverage_margin_s: float = 120.0
-                    ) -> ValidationReport:
+                    weather_gap_s: float = 180.0, coverage_margin_s: float = 120.0,
+                    station_profile: str | os.PathLike | None = None) -> ValidationReport:
     """Check a survey folder completely and collect every problem.
 
     Parameters
@@ -157,6 +159,9 @@ def validate_survey(path: str | os.PathLike, gnss_gap_s: float = 10.0,
     coverage_margin_s : float
         How far before the first / after the last frame a log must reach, seconds; a log
         that does not reach the frames' time span within this margin is a problem.
+    station_profile : path, optional
+        A station profile for the weather and soil logs; default: the one ``survey.json``
+        names in ``files.station_profile``, if any.
 
     Returns
     -------
@@ -277,21 +282,32 @@ def validate_survey(path: str | os.PathLike, gnss_gap_s: float = 10.0,
     if "gnss" in files and (gt := ck.text(files["gnss"], "gnss")) is not None:
         label = files["gnss"]
         with ck.guard(label):
-            log = parse_nmea(gt, label, start_s)
+            log = parse_nmea(gt, label, start_s, gnss_checksums(manifest))
             counts = log.fix_counts()
             n = len(log)
             n_fixed = counts.get(FIX_RTK_FIXED, 0)
             summary["gnss_epochs"] = n
             summary["fix_quality_counts"] = {str(k): v for k, v in sorted(counts.items())}
             summary["rtk_fixed_share"] = n_fixed / n if n else 0.0
-            if log.n_bad_checksum:
-                ck.warn(label, f"line {log.bad_checksum_lines[0]}",
-                        f"{log.n_bad_checksum} line(s) with a wrong checksum skipped")
-            if log.n_unparseable:
-                ck.warn(label, f"line {log.unparseable_lines[0]}",
-                        f"{log.n_unparseable} line(s) that are not NMEA GGA/RMC skipped")
-            if n - counts.get(0, 0) == 0:
-                ck.problem(label, "GGA", "no epoch has a position fix (fix quality 0 throughout)")
+            for lines, what in (
+                    (log.bad_checksum_lines, "line(s) with a wrong checksum skipped"),
+                    (log.no_checksum_lines, "line(s) without a checksum skipped (survey.json "
+                     '"gnss": {"checksums": "optional"} accepts them)'),
+                    (log.unparseable_lines, "line(s) that are not NMEA sentences skipped"),
+                    (log.untimed_gga_lines, "GGA sentence(s) without a time skipped"),
+                    (log.implausible_date_lines, "RMC/ZDA date(s) more than 7 days from "
+                     "time.start_utc ignored"),
+                    (log.prefixed_lines, "line(s) with other bytes before the sentence (read "
+                     "from its $)")):
+                if lines:
+                    ck.warn(label, f"line {lines[0]}", f"{len(lines)} {what}")
+            n_usable = int(np.count_nonzero(log.usable))
+            not_measured = int(np.count_nonzero(np.isin(log.fix_quality, (6, 7, 8))))
+            if not_measured:
+                ck.warn(label, "GGA", f"{not_measured} epoch(s) of fix quality 6-8 (dead "
+                        "reckoning, manual, simulator) are not position fixes")
+            if n_usable == 0:
+                ck.problem(label, "GGA", "no epoch has a position fix (fix quality 1-5)")
             elif n_fixed == 0:
                 ck.warn(label, "GGA", "no RTK-fixed epoch (fix quality 4): positions are "
                         "metre-level, not centimetre-level")
@@ -299,16 +315,25 @@ def validate_survey(path: str | os.PathLike, gnss_gap_s: float = 10.0,
                 ck.warn(label, "GGA", f"{counts[FIX_RTK_FLOAT]} RTK float epoch(s)")
             order(label, log.time_s)
             summary["gnss_gaps"] = _report_gaps(ck, label, "time", log.time_s, gnss_gap_s)
-            valid = log.fix_quality > 0
+            valid = log.usable
             coverage(label, log.time_s[valid], "position fixes")
             if frames is not None and len(frames) and valid.any():
                 _check_fix_gaps(ck, label, np.sort(log.time_s[valid]), frames.time_s)
 
+    profile = None
+    with ck.guard(files.get(PROFILE_KEY) or str(station_profile)):
+        profile = survey_station_profile(root, manifest, station_profile)
+    altitude = None
+    with contextlib.suppress(Exception):
+        altitude = float(manifest["site"]["ground_altitude_m"])
     if "weather" in files and (wt := ck.text(files["weather"], "weather")) is not None:
         label = files["weather"]
         with ck.guard(label):
-            w = parse_toa5(wt, label)
+            table = parse_weather_table(wt, label, profile)
+            w = table.weather
             summary["weather_records"] = len(w)
+            summary["weather_columns"] = {q: f"{c.column} [{c.unit}]"
+                                          for q, c in table.columns.items()}
             if len(w) == 0:
                 ck.problem(label, "", "no records")
             order(label, w.time_s)
@@ -321,10 +346,28 @@ def validate_survey(path: str | os.PathLike, gnss_gap_s: float = 10.0,
                     ck.problem(label, name, "all values missing (NAN)")
                 elif nn:
                     ck.warn(label, name, f"{nn} missing value(s) (NAN)")
+            if "sky_lw_wm2" not in table.columns:
+                ck.warn(label, "sky_lw_wm2", "no pyrgeometer column: the sky long-wave is "
+                        "estimated from air temperature and humidity (Brutsaert 1975 clear "
+                        "sky; under cloud it is underestimated)")
+            for f in table.findings(altitude):
+                ck.problem(label, f"line {f.line}", f.text())
             coverage(label, w.time_s, "weather records")
 
-    for key, parser, what in (("soil", parse_soil_log, "soil temperatures"),
-                              ("blackbody_log", parse_blackbody_log, "blackbody temperatures")):
+    if "soil" in files and (txt := ck.text(files["soil"], "soil")) is not None:
+        with ck.guard(files["soil"]):
+            soil = parse_soil_log(txt, files["soil"], profile)
+            if soil.time_s.size == 0:
+                ck.problem(files["soil"], "", "no records")
+            order(files["soil"], soil.time_s)
+            coverage(files["soil"], soil.time_s, "soil temperatures")
+            first = 5 if txt.lstrip('\ufeff"').startswith("TOA5") else 2  # after the header
+            lines = np.arange(soil.time_s.size) + first
+            for j, depth in enumerate(soil.depth_m):
+                for f in check_series("soil_temp_c", f"{depth:g} m", soil.time_s,
+                                      soil.temp_c[:, j], lines, "deg C"):
+                    ck.problem(files["soil"], f"line {f.line}", f.text())
+    for key, parser, what in (("blackbody_log", parse_blackbody_log, "blackbody temperatures"),):
         if key in files and (txt := ck.text(files[key], key)) is not None:
             with ck.guard(files[key]):
                 lg = parser(txt, files[key])

@@ -37,6 +37,7 @@ from .toolkit import (
     error_line,
     run_toolkit,
     toolkit_available,
+    toolkit_defaults,
 )
 
 ICON_PATH = os.path.join(os.path.dirname(__file__), "icons", "clearfast.svg")
@@ -49,8 +50,8 @@ def gpkg_uri(gpkg: str, layer: str) -> str:
     return f"{gpkg}|layername={layer}"
 
 
-class ToolkitAlgorithm(QgsProcessingAlgorithm):
-    """Shared behaviour: toolkit check, run with progress and cancellation, layer outputs."""
+class ClearfastAlgorithm(QgsProcessingAlgorithm):
+    """Name, title, help, group and icon of the provider's algorithms."""
 
     NAME = ""
     TITLE = ""
@@ -72,10 +73,17 @@ class ToolkitAlgorithm(QgsProcessingAlgorithm):
         return QIcon(ICON_PATH)
 
     def shortHelpString(self):
-        return self.HELP + "\n\nRuns the clearfast toolkit's command line (`clearfast`)."
+        return self.HELP
 
     def createInstance(self):
         return type(self)()
+
+
+class ToolkitAlgorithm(ClearfastAlgorithm):
+    """Shared behaviour: toolkit check, run with progress and cancellation, layer outputs."""
+
+    def shortHelpString(self):
+        return self.HELP + "\n\nRuns the clearfast toolkit's command line (`clearfast`)."
 
     def canExecute(self):
         return toolkit_available()
@@ -154,23 +162,36 @@ class RerunDetectionAlgorithm(ToolkitAlgorithm):
     HELP = ("Re-run anomaly detection on the mosaics of an existing products folder. D1: disc "
             "diameter of the top-hat (larger than the largest expected mine), D2: disc diameter "
             "of the binary opening (D2 < D1), epsilon: tail fraction of the contrast thresholds, "
-            "l: minimum number of scans a blob must appear in (empty = half the scans), gamma: "
-            "occurrence threshold of the combined hot/cold maps (empty = toolkit default).")
+            "l: number of images (scans x bands) a blob must appear in (empty = the toolkit's "
+            "default: {level} of the images covering each pixel), gamma: occurrence threshold of "
+            "the combined hot/cold maps (empty = {gamma} of the images covering each pixel). "
+            "The defaults shown are the toolkit's (`clearfast options`).")
+
+    def shortHelpString(self):
+        defaults = toolkit_defaults()
+
+        def share(key):
+            value = defaults.get(key)
+            return "the toolkit's share" if value is None else f"{value:g}"
+
+        return super().shortHelpString().format(level=share("level_fraction"),
+                                                gamma=share("gamma_fraction"))
 
     def initAlgorithm(self, config=None):
+        defaults = toolkit_defaults()
         self.addParameter(QgsProcessingParameterFile(
             "PRODUCTS", "Products folder", behavior=QgsProcessingParameterFile.Folder))
         self.addParameter(QgsProcessingParameterNumber(
-            "D1", "D1: top-hat disc diameter (m)", QgsProcessingParameterNumber.Double, 0.5,
-            minValue=0.01))
+            "D1", "D1: top-hat disc diameter (m)", QgsProcessingParameterNumber.Double,
+            defaults.get("d1_m"), minValue=0.01))
         self.addParameter(QgsProcessingParameterNumber(
-            "D2", "D2: opening disc diameter (m)", QgsProcessingParameterNumber.Double, 0.05,
-            minValue=0.0))
+            "D2", "D2: opening disc diameter (m)", QgsProcessingParameterNumber.Double,
+            defaults.get("d2_m"), minValue=0.0))
         self.addParameter(QgsProcessingParameterNumber(
             "EPSILON", "epsilon: threshold tail fraction", QgsProcessingParameterNumber.Double,
-            0.01, minValue=0.0, maxValue=0.5))
+            defaults.get("epsilon"), minValue=0.0, maxValue=0.5))
         self.addParameter(QgsProcessingParameterNumber(
-            "LEVEL", "l: minimum number of scans", QgsProcessingParameterNumber.Integer,
+            "LEVEL", "l: voting level (images)", QgsProcessingParameterNumber.Integer,
             None, optional=True, minValue=1))
         self.addParameter(QgsProcessingParameterNumber(
             "GAMMA", "gamma: occurrence threshold", QgsProcessingParameterNumber.Double,
@@ -203,44 +224,84 @@ class RerunDetectionAlgorithm(ToolkitAlgorithm):
 class ExportMineActionAlgorithm(ToolkitAlgorithm):
     NAME = "exportmineaction"
     TITLE = "Export for a mine action centre"
-    HELP = ("Write a WGS84 GeoPackage and a CSV of the suspects with the fields a national mine "
-            "action database imports (stable ids, lat/lon, UTM, survey date, method, evidence, "
-            "confidence, depth, diameter, class cue, GNSS fix, status). Every point is an "
-            "indication, never a confirmed hazardous area.")
+    HELP = ("Write what IMSMA Core imports without editing (WGS84 GeoPackage and CSV tables, "
+            "field names of at most 31 characters, imsma_id and imsma_links): the surveyed "
+            "area, suspected-hazard polygon proposals around clusters of mine indications, and "
+            "the evidence points (suspects from the stated mine likelihood, or all) linked to "
+            "them. The evidence is indirect: proposals are to review, never confirmed hazards. "
+            "The organisation defaults to the QGIS setting clearfast/organisation.")
 
     def initAlgorithm(self, config=None):
+        from qgis.core import (
+            QgsProcessingParameterBoolean,
+            QgsProcessingParameterString,
+            QgsSettings,
+        )
+
         self.addParameter(QgsProcessingParameterFile(
             "PRODUCTS", "Products folder", behavior=QgsProcessingParameterFile.Folder))
+        self.addParameter(QgsProcessingParameterNumber(
+            "MIN_LIKELIHOOD", "Mine likelihood from which a suspect is evidence (0-1)",
+            QgsProcessingParameterNumber.Double, 0.5, False, 0.0, 1.0))
+        self.addParameter(QgsProcessingParameterBoolean(
+            "ALL_SUSPECTS", "Export every suspect as evidence", False))
+        self.addParameter(QgsProcessingParameterNumber(
+            "HAZARD_BUFFER", "Hazard polygon radius around each mine indication (m)",
+            QgsProcessingParameterNumber.Double, 5.0, False, 0.1, 1000.0))
+        self.addParameter(QgsProcessingParameterString(
+            "ORGANISATION", "Surveying organisation",
+            str(QgsSettings().value("clearfast/organisation", "")), optional=True))
         self.addParameter(QgsProcessingParameterFolderDestination("OUTPUT", "Output folder"))
         self.addOutput(QgsProcessingOutputVectorLayer(
             "INDICATIONS", "Mine action indications", QgsProcessing.TypeVectorPoint))
+        self.addOutput(QgsProcessingOutputVectorLayer(
+            "HAZARDS", "Hazard polygon proposals", QgsProcessing.TypeVectorPolygon))
+        self.addOutput(QgsProcessingOutputVectorLayer(
+            "SURVEYED_AREA", "Surveyed area", QgsProcessing.TypeVectorPolygon))
         self.addOutput(QgsProcessingOutputFile("CSV", "Mine action CSV"))
         self.addOutput(QgsProcessingOutputNumber("COUNT", "Number of indications"))
 
     def processAlgorithm(self, parameters, context, feedback):
         folder = self.parameterAsFile(parameters, "PRODUCTS", context)
         out = self.parameterAsString(parameters, "OUTPUT", context)
-        result = self.check(self.run_cli(
-            ["export", folder, "--mine-action", "-o", out, "--progress", "json"], feedback))
+        args = ["export", folder, "--mine-action", "-o", out,
+                "--min-likelihood",
+                repr(self.parameterAsDouble(parameters, "MIN_LIKELIHOOD", context)),
+                "--hazard-buffer",
+                repr(self.parameterAsDouble(parameters, "HAZARD_BUFFER", context))]
+        if self.parameterAsBool(parameters, "ALL_SUSPECTS", context):
+            args.append("--all-suspects")
+        organisation = self.parameterAsString(parameters, "ORGANISATION", context)
+        if organisation:
+            args += ["--organisation", organisation]
+        result = self.check(self.run_cli([*args, "--progress", "json"], feedback))
         gpkg = os.path.join(out, "mine_action.gpkg")
-        uri = gpkg_uri(gpkg, "indications")
-        if not self.load_on_completion(context, uri, "Mine action indications"):
-            raise QgsProcessingException(f"{gpkg}: the export wrote no indications layer")
-        count = next((e.get("count") for e in result.events if e.get("event") == "result"),
-                     None)
-        return {"OUTPUT": out, "INDICATIONS": uri, "CSV": os.path.join(out, "mine_action.csv"),
-                "COUNT": count}
+        outputs = {"OUTPUT": out, "CSV": os.path.join(out, "mine_action.csv")}
+        for key, layer, title in (("SURVEYED_AREA", "surveyed_area", "Surveyed area"),
+                                  ("HAZARDS", "hazard_proposals", "Hazard polygon proposals"),
+                                  ("INDICATIONS", "indications", "Mine action indications")):
+            uri = gpkg_uri(gpkg, layer)
+            if not self.load_on_completion(context, uri, title):
+                raise QgsProcessingException(f"{gpkg}: the export wrote no {layer} layer")
+            outputs[key] = uri
+        outputs["COUNT"] = next(
+            (e.get("count") for e in result.events if e.get("event") == "result"), None)
+        return outputs
 
 
 class ValidateSurveyAlgorithm(ToolkitAlgorithm):
     NAME = "validatesurvey"
     TITLE = "Validate survey"
     HELP = ("Check a survey folder completely (manifest, frames, logs, markers) and report every "
-            "problem. Writes the toolkit's JSON report when an output file is given.")
+            "problem. Writes the toolkit's JSON report when an output file is given. A station "
+            "profile (JSON) maps a real weather station's or soil logger's columns and units "
+            "(default: the one survey.json names).")
 
     def initAlgorithm(self, config=None):
         self.addParameter(QgsProcessingParameterFile(
             "SURVEY", "Survey folder", behavior=QgsProcessingParameterFile.Folder))
+        self.addParameter(QgsProcessingParameterFile(
+            "STATION_PROFILE", "Station profile (JSON)", extension="json", optional=True))
         self.addParameter(QgsProcessingParameterFileDestination(
             "REPORT", "Validation report (JSON)", "JSON files (*.json)", optional=True))
         self.addOutput(QgsProcessingOutputBoolean("VALID", "Survey is valid"))
@@ -251,7 +312,11 @@ class ValidateSurveyAlgorithm(ToolkitAlgorithm):
     def processAlgorithm(self, parameters, context, feedback):
         survey = self.parameterAsFile(parameters, "SURVEY", context)
         report = self.parameterAsFileOutput(parameters, "REPORT", context)
-        result = self.run_cli(["validate", survey, "--json"], feedback)
+        profile = self.parameterAsFile(parameters, "STATION_PROFILE", context)
+        args = ["validate", survey, "--json"]
+        if profile:
+            args += ["--station-profile", profile]
+        result = self.run_cli(args, feedback)
         if result.returncode not in (0, 1):
             raise QgsProcessingException(f"clearfast failed: {error_line(result)}")
         valid = result.returncode == 0
@@ -279,3 +344,38 @@ class ValidateSurveyAlgorithm(ToolkitAlgorithm):
             if self.load_on_completion(context, uri, "Survey markers", "delimitedtext"):
                 outputs["MARKERS"] = uri
         return outputs
+
+
+class FieldMapAlgorithm(ClearfastAlgorithm):
+    """The one-page field map (PDF) of a products folder; needs only QGIS, not the toolkit."""
+
+    NAME = "fieldmap"
+    TITLE = "Field map (PDF)"
+    HELP = ("An A4 field map of a products folder as PDF: the footprint over the scan with the "
+            "best contrast, suspects (mine indications labelled) and markers, UTM grid and "
+            "WGS84 ticks, scale bar, north arrow, legend, a title block (survey, dates, CRS, "
+            "method, the indirect-evidence disclaimer) and the table of mine indications with "
+            "their coordinates. Runs in QGIS; the current project is not changed.")
+
+    def flags(self):
+        # layouts and map rendering belong on the main thread
+        return super().flags() | QgsProcessingAlgorithm.FlagNoThreading
+
+    def initAlgorithm(self, config=None):
+        self.addParameter(QgsProcessingParameterFile(
+            "PRODUCTS", "Products folder", behavior=QgsProcessingParameterFile.Folder))
+        self.addParameter(QgsProcessingParameterFileDestination(
+            "OUTPUT", "Field map", "PDF files (*.pdf)"))
+
+    def processAlgorithm(self, parameters, context, feedback):
+        from .fieldmap import export_field_map
+        from .loader import ProductsError
+
+        folder = self.parameterAsFile(parameters, "PRODUCTS", context)
+        pdf = self.parameterAsFileOutput(parameters, "OUTPUT", context)
+        try:
+            export_field_map(folder, pdf)
+        except (ProductsError, OSError) as exc:
+            raise QgsProcessingException(str(exc)) from None
+        feedback.pushInfo(f"field map: {pdf}")
+        return {"OUTPUT": pdf}

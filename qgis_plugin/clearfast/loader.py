@@ -36,11 +36,18 @@ SCAN_TIME_TAG = "CLEARFAST_SCAN_TIME_UTC"
 
 VECTOR_LAYERS = (
     ("suspects", "Suspects"),
+    ("candidates", "Candidates (set aside)"),
     ("anomalies", "Anomaly outlines"),
     ("markers", "Markers"),
     ("footprint", "Footprint"),
 )
 """GeoPackage layer name and title, top to bottom in the layer tree."""
+
+OPTIONAL_LAYERS = frozenset({"candidates"})
+"""Layers that older products do not have."""
+
+HIDDEN_LAYERS = frozenset({"candidates"})
+"""Layers added switched off (one click away in the layer tree)."""
 
 THERMAL_RAMP = (
     (0.0, (0, 0, 0)),
@@ -164,6 +171,14 @@ def _vector_layer(gpkg: str, name: str, title: str) -> QgsVectorLayer:
     return layer
 
 
+def _gpkg_layer_names(gpkg: str) -> set[str]:
+    """Names of the vector layers of a GeoPackage."""
+    from qgis.core import QgsProviderRegistry
+
+    meta = QgsProviderRegistry.instance().providerMetadata("ogr")
+    return {d.name() for d in meta.querySublayers(gpkg)}
+
+
 def _suspect_form(layer: QgsVectorLayer, folder: str) -> None:
     """Show the contrast-curve figure (path relative to the products folder) in the form."""
     idx = layer.fields().indexOf(SUSPECT_FIGURE_FIELD)
@@ -213,9 +228,14 @@ def load_products(folder: str, project: QgsProject | None = None, canvas=None) -
     gpkg = os.path.join(folder, "anomalies.gpkg")
     vectors = {}
     if os.path.isfile(gpkg):
+        present = _gpkg_layer_names(gpkg)
         for name, title in VECTOR_LAYERS:
+            if name in OPTIONAL_LAYERS and name not in present:
+                continue
             vectors[name] = _vector_layer(gpkg, name, title)
-        _suspect_form(vectors["suspects"], folder)
+        for name in ("suspects", "candidates"):
+            if name in vectors:
+                _suspect_form(vectors[name], folder)
     mosaic_paths = sorted(glob.glob(os.path.join(folder, "mosaics", "scan_*.tif")))
     if not vectors and not mosaic_paths:
         raise ProductsError(f"{folder}: no mosaics and no anomalies.gpkg")
@@ -247,7 +267,8 @@ def load_products(folder: str, project: QgsProject | None = None, canvas=None) -
     for name, _ in VECTOR_LAYERS:
         if name in vectors:
             project.addMapLayer(vectors[name], False)
-            group.addLayer(vectors[name])
+            node = group.addLayer(vectors[name])
+            node.setItemVisibilityChecked(name not in HIDDEN_LAYERS)
     if mosaics:
         mosaic_group = group.addGroup("Mosaics")
         for layer in mosaics:

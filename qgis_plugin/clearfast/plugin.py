@@ -32,13 +32,21 @@ class ClearfastPlugin:
         self.initProcessing()
         if self.iface is None:
             return
-        action = QAction(QIcon(ICON_PATH), "Open survey products…", self.iface.mainWindow())
-        action.setObjectName("clearfastOpenProducts")
-        action.setToolTip("Open a CLEARFAST products folder: mosaics, suspects, markers")
-        action.triggered.connect(self.open_products)
-        self.iface.addPluginToMenu(MENU, action)
-        self.iface.addToolBarIcon(action)
-        self.actions.append(action)
+        for text, name, tip, slot, toolbar in (
+                ("Open survey products…", "clearfastOpenProducts",
+                 "Open a CLEARFAST products folder: mosaics, suspects, markers",
+                 self.open_products, True),
+                ("Export field map (PDF)…", "clearfastFieldMap",
+                 "A one-page field map of a products folder, as PDF", self.export_field_map,
+                 False)):
+            action = QAction(QIcon(ICON_PATH), text, self.iface.mainWindow())
+            action.setObjectName(name)
+            action.setToolTip(tip)
+            action.triggered.connect(slot)
+            self.iface.addPluginToMenu(MENU, action)
+            if toolbar:
+                self.iface.addToolBarIcon(action)
+            self.actions.append(action)
 
     def unload(self):
         for action in self.actions:
@@ -61,3 +69,23 @@ class ClearfastPlugin:
             load_products(folder, QgsProject.instance(), self.iface.mapCanvas())
         except ProductsError as exc:
             self.iface.messageBar().pushCritical("CLEARFAST", str(exc))
+
+    def export_field_map(self):
+        """Ask for a products folder and a PDF name, and write the field map."""
+        from .fieldmap import export_field_map
+
+        window = self.iface.mainWindow()
+        folder = QFileDialog.getExistingDirectory(window, "Field map of CLEARFAST products")
+        if not folder:
+            return
+        pdf, _ = QFileDialog.getSaveFileName(
+            window, "Save the field map", os.path.join(folder, "field_map.pdf"),
+            "PDF files (*.pdf)")
+        if not pdf:
+            return
+        try:
+            export_field_map(folder, pdf)
+        except (ProductsError, OSError) as exc:
+            self.iface.messageBar().pushCritical("CLEARFAST", str(exc))
+            return
+        self.iface.messageBar().pushSuccess("CLEARFAST", f"Field map written: {pdf}")

@@ -9,6 +9,7 @@ from qgis.PyQt.QtGui import QIcon
 
 from .algorithms import (
     ExportMineActionAlgorithm,
+    FieldMapAlgorithm,
     ProcessSurveyAlgorithm,
     RerunDetectionAlgorithm,
     ValidateSurveyAlgorithm,
@@ -37,5 +38,5 @@ class ClearfastProvider(QgsProcessingProvider):
 
     def loadAlgorithms(self):
         for cls in (ProcessSurveyAlgorithm, RerunDetectionAlgorithm, ExportMineActionAlgorithm,
-                    ValidateSurveyAlgorithm):
+                    ValidateSurveyAlgorithm, FieldMapAlgorithm):
             self.addAlgorithm(cls())

@@ -227,6 +227,34 @@ def run_toolkit(args: list[str], feedback, cwd: str | None = None, poll_s: float
     return RunResult(proc.returncode, "\n".join(out), "\n".join(err), events)
 
 
+_DEFAULTS: dict[tuple[str, ...], dict] = {}
+
+
+def toolkit_defaults(timeout_s: float = 60.0) -> dict:
+    """The toolkit's processing defaults (``clearfast options --json``, its ``process``
+    object: parameter name -> default), asked once per toolkit command and kept.
+
+    The plugin defines no defaults of its own; it shows the toolkit's. Returns an empty dict
+    when the toolkit is missing or does not answer (an algorithm then cannot run anyway).
+    """
+    try:
+        command = tuple(toolkit_command())
+    except ToolkitMissing:
+        return {}
+    if command not in _DEFAULTS:
+        doc = {}
+        try:
+            proc = subprocess.run([*command, "options", "--json"], capture_output=True,
+                                  text=True, timeout=timeout_s, stdin=subprocess.DEVNULL)
+            lines = [s for s in proc.stdout.splitlines() if s.startswith("{")]
+            doc = json.loads(lines[-1]) if proc.returncode == 0 and lines else {}
+        except (OSError, subprocess.TimeoutExpired, ValueError):
+            doc = {}
+        process = doc.get("process") if isinstance(doc, dict) else None
+        _DEFAULTS[command] = dict(process) if isinstance(process, dict) else {}
+    return dict(_DEFAULTS[command])
+
+
 def error_line(result: RunResult) -> str:
     """The toolkit's one-line error (last non-empty stderr line) or the exit status."""
     for line in reversed(result.stderr.splitlines()):

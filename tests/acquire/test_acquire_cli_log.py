@@ -13,6 +13,7 @@ import time
 import numpy as np
 
 from clearfast_gis.acquire import SimulatedPtu, pty_pair, simulated_ptu_device
+from clearfast_gis.acquire.weather import toa5_header
 from clearfast_gis.survey import gga_sentence, read_nmea, read_soil_log, read_toa5, rmc_sentence
 from clearfast_gis.timeutil import parse_utc
 
@@ -56,7 +57,8 @@ def test_all_instruments_then_sigterm_leaves_complete_files(tmp_path):
     gnss_lines = b"".join((gga_sentence(T0 + k, 35.17, 33.36, 170.0, 4, 15, 0.6) + "\r\n" +
                            rmc_sentence(T0 + k, 35.17, 33.36) + "\r\n").encode()
                           for k in range(10))
-    weather = b'"2026-11-15 10:01:00",1,15.5,55,1004.0,1.5,400,310,0\r\n'
+    weather = toa5_header().encode() + \
+        b'"2026-11-15 10:01:00",1,15.5,55,1004.0,1.5,400,310,0\r\n'
     soil = b"T,2026-11-15T10:00:00Z,20.5,19.0,18.2,17.5,16.9\r\n"
     with contextlib.ExitStack() as stack:
         (g_fd, g_name), (w_fd, w_name), (s_fd, s_name) = (

@@ -18,6 +18,7 @@ from clearfast_gis.acquire import (
     WeatherStationLogger,
     simulated_ptu_device,
 )
+from clearfast_gis.acquire.weather import toa5_header
 from clearfast_gis.errors import ClearfastError, InvalidInput
 from clearfast_gis.survey import (
     gga_sentence,
@@ -111,6 +112,7 @@ def _log_instruments(root) -> None:
     gnss, weather = GnssLogger(loop, root / "gnss.nmea"), WeatherStationLogger(loop, root /
                                                                                "weather.dat")
     soil = ThermocoupleLogger(loop, root / "soil.csv")
+    weather.feed(toa5_header().encode())  # the station's header: columns go by name
     for t in T0 + np.arange(0.0, 3001.0, 5.0):
         gnss.feed((gga_sentence(t, 35.17, 33.36, 170.0, 4, 14, 0.7) + "\r\n"
                    + rmc_sentence(t, 35.17, 33.36) + "\r\n").encode())

@@ -66,9 +66,11 @@ def test_logger_reports_receiver_time_and_fix_changes(tmp_path):
         g.feed((gga_sentence(t, lat, 33.0, 100.0, q, 12, 0.8) + "\r\n" + zda_sentence(t)
                 + "\r\n" + rmc_sentence(t, lat, 33.0, valid=q > 0) + "\r\n").encode())
     g.log.close()
-    # one ZDA and one RMC per epoch, each with the arrival of its batch
-    assert [t for t, _ in times] == [T0 + k for k in range(6) for _ in (0, 1)]
-    assert [m for _, m in times] == [100 + k for k in range(6) for _ in (0, 1)]
+    # one ZDA per epoch and one RMC per epoch with a fix (a void RMC never gives the time),
+    # each with the arrival of its batch
+    valid = [(0, 1) if q > 0 else (0,) for q in quality]
+    assert [t for t, _ in times] == [T0 + k for k in range(6) for _ in valid[k]]
+    assert [m for _, m in times] == [100 + k for k in range(6) for _ in valid[k]]
     assert g.time_s == T0 + 5
     # GGA at 00:00:01 (k = 3) is dated by the previous ZDA of 23:59:59 + rollover
     assert g.fix.time_s == T0 + 5 and g.fix.fix_name == "RTK fixed"
@@ -138,3 +140,47 @@ def test_clock_waits_scale_to_wall_time():
     assert abs(HostClock().now() - time.time()) < 1.0
     with pytest.raises(ValueError):
         GnssClock(time_scale=0.0)
+
+
+def test_void_or_implausible_dates_never_move_the_survey_clock(tmp_path):
+    mono = FakeMono()
+    clock = GnssClock(mono=mono)
+    g = _logger(tmp_path, on_time=clock.observe, mono=mono)
+    cold = "$GPRMC,000012.00,V,,,,,,,050180,,,N"  # a cold start's void RMC dated 1980/2080
+    g.feed((f"{cold}*{_cs(cold[1:])}\r\n").encode())
+    assert not clock.ready and g.time_s is None
+    for k in range(4):
+        mono.t = 1000.0 + k
+        g.feed((zda_sentence(T0 + k) + "\r\n").encode())
+    # a valid-looking ZDA of a week-rollover receiver, 1024 weeks off: refused by the logger
+    # (more than a year from the host clock); one two days off: refused by the locked clock
+    mono.t = 1004.0
+    g.feed((zda_sentence(T0 + 4.0 - 1024 * 7 * 86400.0) + "\r\n").encode())
+    assert g.n_refused_times == 1 and clock.n_refused == 0
+    g.feed((zda_sentence(T0 + 4.0 - 2 * 86400.0) + "\r\n").encode())
+    assert g.n_refused_times == 2 and clock.n_refused == 1
+    assert clock.now() == pytest.approx(T0 + 4.0, abs=1e-6)
+    assert g.time_s == T0 + 3.0
+    mono.t = 1005.0
+    g.feed((zda_sentence(T0 + 5.0) + "\r\n").encode())
+    assert clock.now() == pytest.approx(T0 + 5.0, abs=1e-6) and g.time_s == T0 + 5.0
+    g.log.close()
+
+
+def test_clock_before_lock_follows_the_latest_receiver_time():
+    mono = FakeMono()
+    clock = GnssClock(mono=mono)
+    assert clock.observe(T0 - 40 * 365 * 86400.0, 1000.0)  # one bogus first sentence
+    with pytest.raises(ClockError, match="must agree"):
+        clock.now()  # one sentence alone gives no time
+    assert clock.observe(T0, 1000.5)  # not yet locked: the receiver's new time restarts
+    assert not clock.ready
+    assert clock.observe(T0 + 1.0, 1001.5)
+    mono.t = 1002.5
+    assert clock.ready and clock.now() == pytest.approx(T0 + 2.0, abs=1e-6)
+
+
+def _cs(body: str) -> str:
+    from clearfast_gis.survey import nmea_checksum
+
+    return nmea_checksum(body)

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import json
 import math
 
 import numpy as np
@@ -11,6 +12,7 @@ import serial
 from clearfast_gis.acquire import ThermocoupleLogger, WeatherStationLogger, toa5_header
 from clearfast_gis.errors import InvalidInput
 from clearfast_gis.survey import SoilLog, WeatherLog, read_soil_log, read_toa5, write_soil_log
+from clearfast_gis.survey.station_profiles import parse_station_profile
 from clearfast_gis.survey.toa5 import toa5_text
 from clearfast_gis.timeutil import format_utc, parse_utc
 
@@ -31,9 +33,11 @@ def test_weather_records_in_contract_order_read_back(tmp_path):
     w = WeatherStationLogger(_loop(), path)
     stream = "".join(_toa5_line(k) for k in range(3)) + _toa5_line(3, '"NAN"')
     stream += "garbage line\r\n" + '"2026-13-45 00:00:00",5,1,2,3,4,5,6,7\r\n'
-    w.feed(stream.encode())
+    w.feed(stream.encode())  # no header yet: nothing is mapped by position
+    assert (w.n_records, w.n_unmapped, w.n_bad) == (0, 4, 2)
+    w.feed((toa5_header() + stream).encode())
     w.log.close()
-    assert (w.n_records, w.n_bad) == (4, 2)
+    assert (w.n_records, w.n_bad) == (4, 4)
     log = read_toa5(path)
     np.testing.assert_array_equal(log.time_s, T0 + 60.0 * np.arange(4))
     np.testing.assert_allclose(log.air_temp_c[:3], 15.25)
@@ -56,8 +60,8 @@ def test_weather_header_lines_set_columns_by_name_and_restart_appends(tmp_path):
     w = WeatherStationLogger(_loop(), path)
     w.feed((header + '"2026-11-15 00:01:00",7,55.0,12.5,3.5,1001.0,0\r\n').encode())
     w.log.close()
-    w2 = WeatherStationLogger(_loop(), path)  # restarted logger: no second header
-    w2.feed(b'"2026-11-15 00:02:00",,16.0,80.0,1002.0,1.0,10.0\r\n')  # no RECORD field
+    w2 = WeatherStationLogger(_loop(), path)  # restarted logger: the station's header again
+    w2.feed((header + '"2026-11-15 00:02:00",,80.0,16.0,1.0,1002.0,10.0\r\n').encode())
     w2.log.close()
     text = path.read_bytes().decode()
     assert text.count('"TOA5"') == 1
@@ -67,6 +71,36 @@ def test_weather_header_lines_set_columns_by_name_and_restart_appends(tmp_path):
     np.testing.assert_allclose(log.wind_ms, [3.5, 1.0])
     assert np.isnan(log.sky_lw_wm2).all()  # the station has no pyrgeometer
     assert text.split("\r\n")[5].split(",")[1] == "8"  # counted on from the file
+
+
+def test_weather_columns_by_name_and_units_converted_never_by_position(tmp_path):
+    """A station that sends records without a header had its solar irradiance written as
+    air temperature: such lines are refused; its profile's header maps them by name, and a
+    station in deg F, inHg and km/h is converted."""
+    profile = parse_station_profile(json.dumps({
+        "format": "clearfast-station-profile", "format_version": 1,
+        "header": ["TIMESTAMP", "RECORD", "SlrW", "WS_kmh", "AirF", "Humid", "Baro"],
+        "columns": {"solar_wm2": {"column": "SlrW", "unit": "W/m^2"},
+                    "wind_ms": {"column": "WS_kmh", "unit": "km/h"},
+                    "air_temp_c": {"column": "AirF", "unit": "deg F"},
+                    "rh_pct": {"column": "Humid", "unit": "%"},
+                    "pressure_hpa": {"column": "Baro", "unit": "inHg"}}}))
+    line = b'"2026-11-15 00:01:00",1,147.0,3.6,59.0,40.0,29.92\r\n'
+    events: list[tuple] = []
+    bare = WeatherStationLogger(_loop(), tmp_path / "bare.dat", on_event=lambda *e:
+                                events.append(e))
+    bare.feed(line)
+    bare.log.close()
+    assert (bare.n_records, bare.n_unmapped) == (0, 1)
+    assert events[0][1] == "unmapped" and "no TOA5 field-name line" in events[0][2]
+    w = WeatherStationLogger(_loop(), tmp_path / "w.dat", profile=profile)
+    w.feed(line)
+    w.log.close()
+    log = read_toa5(tmp_path / "w.dat")
+    assert log.solar_wm2[0] == 147.0 and log.air_temp_c[0] == pytest.approx(15.0)
+    assert log.wind_ms[0] == pytest.approx(1.0, abs=1e-5)
+    assert log.pressure_hpa[0] == pytest.approx(1013.2, abs=0.05)
+    assert log.rh_pct[0] == 40.0
 
 
 def test_weather_refuses_to_append_to_a_foreign_file(tmp_path):

@@ -10,10 +10,8 @@ final name.
 from __future__ import annotations
 
 import contextlib
-import hashlib
 import json
 import os
-import re
 import signal
 import subprocess
 import sys
@@ -27,6 +25,7 @@ import pytest
 from clearfast_gis.cli.main import cli
 from clearfast_gis.pipeline.state import is_temporary
 from clearfast_gis.survey.testing import make_minimal_survey
+from tests.product_digests import comparable_digests, product_files
 
 from .conftest import CAPPED_CLI, MAX_ANOMALIES
 
@@ -83,16 +82,6 @@ def _kill_when(proc: subprocess.Popen, condition, timeout_s: float = 120.0) -> l
     return events
 
 
-def product_files(products: Path) -> dict[str, Path]:
-    """Files under their final names (temporaries and the state folder left out)."""
-    out = {}
-    for p in products.rglob("*"):
-        rel = p.relative_to(products).as_posix()
-        if p.is_file() and not rel.startswith(".clearfast/") and not is_temporary(p.name):
-            out[rel] = p
-    return out
-
-
 def assert_complete(products: Path) -> None:
     """Every product present under its final name opens and reads completely."""
     import pyogrio
@@ -117,25 +106,6 @@ def assert_complete(products: Path) -> None:
             raise AssertionError(f"unexpected product {rel}")
     for p in (products / ".clearfast").glob("*.npy"):
         np.load(p)
-
-
-def comparable_digests(products: Path) -> dict[str, str]:
-    """sha256 of every product; products.json and report.html without their timings and
-    resources."""
-    out = {}
-    for rel, p in product_files(products).items():
-        data = p.read_bytes()
-        if rel == "products.json":
-            doc = json.loads(data)
-            doc.pop("timings_s")
-            doc.pop("resources")  # wall/CPU/memory of this run
-            data = json.dumps(doc, sort_keys=True).encode()
-        elif rel == "report.html":
-            data, n = re.subn(rb"<h2>Stage timings</h2><table>.*?</table>", b"", data,
-                              flags=re.S)
-            assert n == 1
-        out[rel] = hashlib.sha256(data).hexdigest()
-    return out
 
 
 def test_sigkill_at_any_stage_then_resume_gives_identical_products(kill_survey, tmp_path,

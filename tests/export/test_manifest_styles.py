@@ -83,18 +83,39 @@ def _categories(qml: str) -> tuple[str, dict]:
     return renderer.get("attr"), colours
 
 
+def _rule_colours(qml: str) -> dict[str, tuple[int, int, int]]:
+    """Rule label -> fill colour (RGB) of a rule-based renderer."""
+    renderer = ET.fromstring(qml).find("renderer-v2")
+    assert renderer.get("type") == "RuleRenderer"
+    symbols = {s.get("name"): s for s in renderer.find("symbols")}
+    colours = {}
+    for rule in renderer.iter("rule"):
+        opt = symbols[rule.get("symbol")].find(".//Option[@name='color']")
+        colours[rule.get("label")] = tuple(int(v) for v in opt.get("value").split(",")[:3])
+    return colours
+
+
 def test_default_styles_layers_and_class_colours():
     styles = default_styles()
-    assert set(styles) == {"anomalies", "suspects", "markers", "footprint"}
+    assert set(styles) == {"anomalies", "suspects", "candidates", "markers", "footprint"}
+    assert set(default_styles(["suspects", "markers", "other"])) == {"suspects", "markers"}
     for qml in styles.values():
         assert ET.fromstring(qml).tag == "qgis"
-    for qml in (styles["suspects"], mine_action_style()):
-        attr, colours = _categories(qml)
-        assert attr == "class_cue" and colours == CLASS_COLOURS_RGB
+    attr, colours = _categories(mine_action_style())
+    assert attr == "class_cue" and colours == CLASS_COLOURS_RGB
+    assert _rule_colours(styles["suspects"]) == {
+        "AT mine indication": CLASS_COLOURS_RGB["at_mine"],
+        "AP mine indication": CLASS_COLOURS_RGB["ap_mine"],
+        "Other suspect": CLASS_COLOURS_RGB["unknown"],
+        "Clutter": CLASS_COLOURS_RGB["clutter"]}
     root = ET.fromstring(styles["suspects"])
-    assert root.find(".//labeling/settings/text-style").get("fieldName") == "anomaly_id"
+    # clutter is off by default (one click in the legend), everything else on
+    assert {r.get("label"): r.get("checkstate", "1") for r in root.iter("rule")
+            if r.get("label")}["Clutter"] == "0"
+    assert root.find(".//labeling").get("type") == "rule-based"
+    assert root.find(".//labeling//text-style").get("fieldName") == "short_id"
     assert ET.fromstring(mine_action_style()).find(
-        ".//labeling/settings/text-style").get("fieldName") == "hazard_id"
+        ".//labeling/settings/text-style").get("fieldName") == "imsma_id"
 
 
 def test_mosaic_style_stretch():

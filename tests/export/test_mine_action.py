@@ -57,7 +57,7 @@ def read_csv(path):
 def test_export_fields_and_values(demo_products, tmp_path):
     from osgeo_utils.samples import validate_gpkg
 
-    res = export_mine_action(demo_products.root, tmp_path / "ma")
+    res = export_mine_action(demo_products.root, tmp_path / "ma", include_all=True)
     assert res.count == demo_products.n_suspects
     rows = read_csv(res.csv)
     assert list(rows[0]) == list(MINE_ACTION_FIELDS)
@@ -79,7 +79,9 @@ def test_export_fields_and_values(demo_products, tmp_path):
             assert r["depth_m"] == "" and r["depth_sigma_m"] == ""
         else:
             assert float(r["depth_m"]) == pytest.approx(s.depth_m, abs=1e-4)
-        assert r["hazard_id"].startswith("CF-DEMO-SEED0-")
+        assert r["imsma_id"].startswith("CF-DEMO-SEED0-") and r["imsma_links"] == ""
+        assert r["mine_indication"] == ("yes" if s.class_cue in ("at_mine", "ap_mine") else "no")
+        assert r["cue_confidence"] == f"{s.cue_confidence:.3f}"
     assert by_src["A004"]["gnss_fix"] == "RTK float (degraded)"
     validate_gpkg.check(str(res.gpkg))
     frame = pyogrio.read_dataframe(res.gpkg, layer="indications")
@@ -87,13 +89,15 @@ def test_export_fields_and_values(demo_products, tmp_path):
     np.testing.assert_allclose(frame.geometry.y, frame["latitude_deg"], atol=1e-12)
     from clearfast_gis.export import read_layer_styles
 
-    assert "hazard_id" in read_layer_styles(res.gpkg)["indications"]
+    assert "imsma_id" in read_layer_styles(res.gpkg)["indications"]
 
 
 def test_export_is_reproducible(demo_products, tmp_path):
-    a = export_mine_action(demo_products.root, tmp_path / "a")
-    b = export_mine_action(demo_products.root, tmp_path / "b")
-    assert a.csv.read_bytes() == b.csv.read_bytes()
+    export_mine_action(demo_products.root, tmp_path / "a")
+    export_mine_action(demo_products.root, tmp_path / "b")
+    for name in ("mine_action.csv", "hazard_proposals.csv", "surveyed_area.csv",
+                 "mine_action.gpkg", "mine_action.xlsx"):
+        assert (tmp_path / "a" / name).read_bytes() == (tmp_path / "b" / name).read_bytes()
 
 
 def test_export_errors(tmp_path, demo_products):
@@ -115,7 +119,7 @@ def test_cli_export(demo_products, tmp_path):
     r = cli("export", str(demo_products.root), "--mine-action", "-o", str(out),
             "--progress", "none")
     assert r.returncode == 0, r.stderr
-    assert f"{demo_products.n_suspects} indications" in r.stdout
+    assert "4 indications, 1 hazard polygon proposals" in r.stdout
     assert (out / "mine_action.csv").is_file() and (out / "mine_action.gpkg").is_file()
     r = cli("export", str(demo_products.root), "-o", str(out))
     assert r.returncode == 2 and "--mine-action" in r.stderr

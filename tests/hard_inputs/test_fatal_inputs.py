@@ -72,7 +72,7 @@ def test_nmea_without_any_fix(survey, tmp_path, process):
                   rmc_sentence(t0 + k, float("nan"), float("nan"), valid=False)]
     (survey / "gnss.nmea").write_text("\r\n".join(lines) + "\r\n")
     assert_fatal(process(survey, tmp_path / "out"), "gnss.nmea: GGA: no epoch has a position "
-                 "fix (fix quality 0 throughout)")
+                 "fix (fix quality 1-5)")
 
 
 def _edit_csv_column(path, column: int, fn) -> None:

@@ -85,6 +85,28 @@ def test_simpleitk_translation_only_and_bound():
     assert not far.converged  # the optimum lies beyond the bound
 
 
+def test_simpleitk_registration_in_the_chain_is_the_same_bits_every_time():
+    """Inside the chain (``serial_kernels``) SimpleITK runs on one thread: its threads' partial
+    metric sums, added as they finish, made repeated registrations differ in the last bits."""
+    import SimpleITK as sitk
+
+    from clearfast_gis.parallel import serial_kernels
+
+    shape = (120, 150)
+    truth = ConformalTransform(0.0, 0.41, -0.27, center_px=((shape[1] - 1) / 2,
+                                                           (shape[0] - 1) / 2))
+    fixed, moving = make_pair(shape, truth, seed=5, noise_k=0.1)
+    before = sitk.ProcessObject.GetGlobalDefaultNumberOfThreads()
+    with kernels.use("reference"), serial_kernels():
+        assert sitk.ProcessObject.GetGlobalDefaultNumberOfThreads() == 1
+        runs = {repr(register_conformal(fixed, moving, max_shift_px=4, max_angle_deg=0))
+                for _ in range(4)}
+    assert sitk.ProcessObject.GetGlobalDefaultNumberOfThreads() == before
+    assert len(runs) == 1, runs
+    with serial_kernels():  # the fast kernels leave SimpleITK alone
+        assert sitk.ProcessObject.GetGlobalDefaultNumberOfThreads() == before
+
+
 def test_sitk_transform_conversion_round_trip():
     from clearfast_gis.registration.reference import _from_sitk, _to_sitk
 

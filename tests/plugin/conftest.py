@@ -45,6 +45,16 @@ def qgis_app():
 
 
 @pytest.fixture()
+def project(qgis_app):
+    """An empty QGIS project of its own, cleared afterwards."""
+    from qgis.core import QgsProject
+
+    proj = QgsProject()
+    yield proj
+    proj.clear()
+
+
+@pytest.fixture()
 def session_plugin(qgis_app):
     """The plugin object registered for the session (``classFactory(None)``)."""
     return qgis_app.clearfast_plugin

@@ -76,7 +76,8 @@ def layers_to_load(context):
 def test_export_mine_action_real_toolkit(qgis_app, products, real_toolkit, tmp_path):
     out = tmp_path / "ma"
     results, ok, context, feedback = run_alg(
-        "clearfast:exportmineaction", {"PRODUCTS": str(products.root), "OUTPUT": str(out)})
+        "clearfast:exportmineaction", {"PRODUCTS": str(products.root), "OUTPUT": str(out),
+                                       "ALL_SUSPECTS": True, "ORGANISATION": "Test org"})
     assert ok, feedback.textLog()
     assert results["COUNT"] == products.n_suspects
     assert os.path.isfile(results["CSV"])
@@ -86,6 +87,16 @@ def test_export_mine_action_real_toolkit(qgis_app, products, real_toolkit, tmp_p
     assert layer.featureCount() == products.n_suspects
     assert layer.renderer().type() == "categorizedSymbol"  # default style from the GeoPackage
     assert {f["land_class"] for f in layer.getFeatures()} == {"indication"}
+    assert {f["organisation"] for f in layer.getFeatures()} == {"Test org"}
+    hazards = layers["Hazard polygon proposals"]
+    assert hazards.isValid() and hazards.featureCount() >= 1
+    assert all(f.geometry().isGeosValid() for f in hazards.getFeatures())
+    assert layers["Surveyed area"].featureCount() == 1
+    # the default: only the mine indications (AT/AP cue) are evidence
+    results, ok, context, feedback = run_alg(
+        "clearfast:exportmineaction", {"PRODUCTS": str(products.root),
+                                       "OUTPUT": str(tmp_path / "mines")})
+    assert ok and results["COUNT"] == 4
     assert feedback.values and max(feedback.values) == pytest.approx(100.0)
 
 
@@ -165,6 +176,20 @@ def test_validate_survey_reports_invalid(qgis_app, fake_toolkit, tmp_path, monke
     results, ok, _, feedback = run_alg("clearfast:validatesurvey", {"SURVEY": str(tmp_path)})
     assert ok and results["VALID"] is False
     assert "camera.resolution: expected 2 integers" in feedback.textLog()
+
+
+def test_validate_survey_takes_a_station_profile(qgis_app, real_toolkit, tmp_path):
+    from tests.survey.test_station_profile_cli import PROFILE, station_survey
+
+    survey = station_survey(tmp_path / "s")
+    results, ok, _, feedback = run_alg("clearfast:validatesurvey", {"SURVEY": str(survey)})
+    assert ok and results["VALID"] is False
+    assert "weather.dat: line 2: missing air temperature" in feedback.textLog()
+    profile = tmp_path / "station.json"
+    profile.write_text(json.dumps(PROFILE))
+    results, ok, _, feedback = run_alg("clearfast:validatesurvey", {
+        "SURVEY": str(survey), "STATION_PROFILE": str(profile)})
+    assert ok and results["VALID"] is True, feedback.textLog()
 
 
 def test_validate_survey_real_toolkit_lists_problems(qgis_app, real_toolkit, tmp_path):
@@ -262,3 +287,26 @@ def test_toolkit_command_fallbacks(qgis_app, monkeypatch, tmp_path):
     monkeypatch.setenv("PATH", str(tmp_path / "empty"))
     cmd = toolkit.toolkit_command()  # this checkout's toolkit is importable here
     assert cmd[1:] == ["-m", "clearfast_gis.cli.main"]
+
+
+def test_detection_defaults_are_the_toolkits(qgis_app, real_toolkit):
+    """The plugin shows the toolkit's own defaults (``clearfast options --json``), the same
+    ones ``clearfast detect`` uses: changing a default in ProcessOptions changes both."""
+    from qgis.core import QgsApplication
+
+    from clearfast_gis.pipeline.options import ProcessOptions
+
+    defaults = ProcessOptions()
+    alg = QgsApplication.processingRegistry().createAlgorithmById("clearfast:rerundetection")
+    shown = {name: alg.parameterDefinition(name).defaultValue()
+             for name in ("D1", "D2", "EPSILON", "LEVEL", "GAMMA")}
+    assert shown == {"D1": defaults.d1_m, "D2": defaults.d2_m, "EPSILON": defaults.epsilon,
+                     "LEVEL": defaults.level, "GAMMA": defaults.gamma}
+    assert f"{defaults.level_fraction:g} of the images" in alg.shortHelpString()
+
+
+def test_defaults_unknown_without_a_toolkit(qgis_app, fake_toolkit):
+    """A command that does not answer ``options --json`` gives no defaults, not made-up ones."""
+    from clearfast.toolkit import toolkit_defaults
+
+    assert toolkit_defaults() == {}

@@ -15,15 +15,6 @@ from tests.plugin.test_loader import _render, _rgb
 pytestmark = pytest.mark.qgis
 
 
-@pytest.fixture()
-def project(qgis_app):
-    from qgis.core import QgsProject
-
-    proj = QgsProject()
-    yield proj
-    proj.clear()
-
-
 def test_demo_products_load_with_styles_time_and_counts(project, demo_products, tmp_path):
     from clearfast.loader import load_products
 
@@ -36,8 +27,17 @@ def test_demo_products_load_with_styles_time_and_counts(project, demo_products, 
             n = db.execute(f'SELECT COUNT(*) FROM "{name}"').fetchone()[0]
             assert layer.featureCount() == n, name
     suspects = loaded.vectors["suspects"]
-    assert suspects.renderer().type() == "categorizedSymbol"
-    assert {c.value() for c in suspects.renderer().categories()} >= {"at_mine", "ap_mine"}
+    assert suspects.renderer().type() == "RuleRenderer"
+    assert {r.label() for r in suspects.renderer().rootRule().children()} >= {
+        "AT mine indication", "AP mine indication", "Clutter"}
+    # the outlines of the real chain carry the suspects' columns and show them formatted
+    from tests.plugin.test_planner_view import shown
+
+    outlines = loaded.vectors["anomalies"]
+    feature = next(f for f in outlines.getFeatures() if f["depth_m"] == f["depth_m"]
+                   and f["depth_m"] is not None and f["depth_sigma_m"] is not None)
+    assert shown(outlines, feature, "depth") == (
+        f"{feature['depth_m'] * 100:.1f} ± {feature['depth_sigma_m'] * 100:.1f} cm")
     assert len(loaded.mosaics) == len(manifest["scans"]) == 6
     for layer in loaded.mosaics:
         assert layer.isValid() and layer.crs().authid() == "EPSG:32636"

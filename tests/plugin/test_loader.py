@@ -15,15 +15,6 @@ PLUGIN = Path(__file__).resolve().parents[2] / "qgis_plugin" / "clearfast"
 
 
 @pytest.fixture()
-def project(qgis_app):
-    from qgis.core import QgsProject
-
-    proj = QgsProject()
-    yield proj
-    proj.clear()
-
-
-@pytest.fixture()
 def loaded(project, products):
     from clearfast.loader import load_products
 
@@ -51,32 +42,40 @@ def test_styles_from_geopackage_applied(loaded):
 
     suspects = loaded.vectors["suspects"]
     renderer = suspects.renderer()
-    assert renderer.type() == "categorizedSymbol"
-    assert renderer.classAttribute() == "class_cue"
-    colours = {c.value(): c.symbol().color().name() for c in renderer.categories()}
-    assert colours == {"at_mine": "#e31a1c", "ap_mine": "#e31a1c", "unknown": "#ff7f00",
-                       "clutter": "#969696"}
+    assert renderer.type() == "RuleRenderer"
+    rules = {r.label(): r for r in renderer.rootRule().children()}
+    colours = {label: r.symbol().color().name() for label, r in rules.items()}
+    assert colours == {"AT mine indication": "#e31a1c", "AP mine indication": "#e31a1c",
+                       "Other suspect": "#ff7f00", "Clutter": "#969696"}
+    assert {label: r.active() for label, r in rules.items()} == {
+        "AT mine indication": True, "AP mine indication": True, "Other suspect": True,
+        "Clutter": False}
     assert suspects.labelsEnabled()
-    assert suspects.labeling().settings().fieldName == "anomaly_id"
+    assert suspects.labeling().type() == "rule-based"
     assert suspects.geometryType() == QgsWkbTypes.PointGeometry
     outlines = loaded.vectors["anomalies"].renderer()
     assert outlines.type() == "categorizedSymbol" and outlines.classAttribute() == "polarity"
     assert loaded.vectors["markers"].labeling().settings().fieldName == "marker_id"
 
 
-def test_suspect_form_shows_inversion_and_figure(loaded, products):
-    suspects = loaded.vectors["suspects"]
-    config = suspects.editFormConfig()
-    fields_in_form = set()
+def form_field_names(layer) -> set[str]:
+    """Names of the fields placed anywhere in a layer's drag-and-drop form."""
+    names = set()
 
     def walk(element):
         for child in element.children():
             if hasattr(child, "children"):
                 walk(child)
             else:
-                fields_in_form.add(child.name())
+                names.add(child.name())
 
-    walk(config.invisibleRootContainer())
+    walk(layer.editFormConfig().invisibleRootContainer())
+    return names
+
+
+def test_suspect_form_shows_inversion_and_figure(loaded, products):
+    suspects = loaded.vectors["suspects"]
+    fields_in_form = form_field_names(suspects)
     assert {"depth_m", "depth_sigma_m", "diffusivity_m2s", "diffusivity_sigma_m2s", "status",
             "class_cue", "figure"} <= fields_in_form
     setup = suspects.editorWidgetSetup(suspects.fields().indexOf("figure"))
@@ -231,8 +230,9 @@ class FakeIface:
     def addToolBarIcon(self, action):
         self.toolbar.append(action)
 
-    def removeToolBarIcon(self, action):
-        self.toolbar.remove(action)
+    def removeToolBarIcon(self, action):  # QGIS ignores an action that is not there
+        if action in self.toolbar:
+            self.toolbar.remove(action)
 
 
 def test_plugin_gui_unload_removes_everything(session_plugin):
@@ -248,9 +248,10 @@ def test_plugin_gui_unload_removes_everything(session_plugin):
     try:
         plugin.initGui()
         assert registry.providerById("clearfast") is plugin.provider
-        assert len(iface.menu) == 1 and len(iface.toolbar) == 1
-        assert iface.menu[0][0] == "&CLEARFAST"
+        assert len(iface.menu) == 2 and len(iface.toolbar) == 1
+        assert {m for m, _ in iface.menu} == {"&CLEARFAST"}
         assert iface.menu[0][1].text().startswith("Open survey products")
+        assert iface.menu[1][1].text().startswith("Export field map")
         plugin.unload()
         assert iface.menu == [] and iface.toolbar == []
         assert registry.providerById("clearfast") is None
@@ -259,4 +260,4 @@ def test_plugin_gui_unload_removes_everything(session_plugin):
         session_plugin.initProcessing()
     assert len(registry.providers()) == before
     assert {a.name() for a in registry.providerById("clearfast").algorithms()} == {
-        "processsurvey", "rerundetection", "exportmineaction", "validatesurvey"}
+        "processsurvey", "rerundetection", "exportmineaction", "validatesurvey", "fieldmap"}

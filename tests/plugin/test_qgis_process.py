@@ -70,5 +70,16 @@ def test_qgis_process_export_with_real_toolkit(qgis_env, products, tmp_path):
                           f"PRODUCTS={products.root}", f"OUTPUT={out}"], env)
     assert r.returncode == 0, r.stderr
     doc = json.loads(r.stdout[r.stdout.index("{"):])
-    assert doc["results"]["COUNT"] == products.n_suspects
-    assert (out / "mine_action.csv").is_file()
+    assert doc["results"]["COUNT"] == 4  # the AT/AP mine indications
+    assert (out / "mine_action.csv").is_file() and (out / "hazard_proposals.csv").is_file()
+
+
+def test_qgis_process_field_map(qgis_env, products, tmp_path):
+    pdf = tmp_path / "field_map.pdf"
+    r = run_qgis_process(["--json", "run", "clearfast:fieldmap", "--",
+                          f"PRODUCTS={products.root}", f"OUTPUT={pdf}"], qgis_env)
+    assert r.returncode == 0, r.stderr
+    doc = json.loads(r.stdout[r.stdout.index("{"):])
+    assert doc["results"]["OUTPUT"] == str(pdf)
+    info = subprocess.run(["pdfinfo", str(pdf)], capture_output=True, text=True, check=True)
+    assert "Pages:           1" in info.stdout

@@ -68,9 +68,12 @@ def test_toa5_units_with_comment_rejected_but_campbell_layout_read():
 
 def test_toa5_errors_name_line_and_column():
     text = toa5_text(_weather(3))
+    kmh = parse_toa5(text.replace("meters/second", "km/h"))  # converted, not refused
+    np.testing.assert_allclose(kmh.wind_ms, parse_toa5(text).wind_ms / 3.6)
     with pytest.raises(InvalidInput) as e:
-        parse_toa5(text.replace("meters/second", "km/h"))
-    assert e.value.one_line().startswith("weather.dat: line 3: WS_ms_Avg: unit 'km/h'")
+        parse_toa5(text.replace("meters/second", "furlongs/fortnight"))
+    assert e.value.one_line().startswith("weather.dat: line 3: WS_ms_Avg: unit "
+                                         "'furlongs/fortnight' is not a speed unit")
     lines = text.splitlines()
     lines[5] = lines[5].replace('"2026-11-15 00:01:00"', '"yesterday"')
     with pytest.raises(InvalidInput) as e:
@@ -79,8 +82,10 @@ def test_toa5_errors_name_line_and_column():
                                   "time, got 'yesterday'")
     with pytest.raises(InvalidInput, match="not a TOA5"):
         parse_toa5("TIMESTAMP,AirTC\n")
-    with pytest.raises(InvalidInput, match="missing column 'RH_Avg'"):
-        parse_toa5(text.replace("RH_Avg", "RH"))
+    with pytest.raises(InvalidInput, match=r"line 2: missing relative humidity \(rh_pct, "
+                       r"e.g. RH_Avg\); the file has columns TIMESTAMP, RECORD, AirTC_Avg, "
+                       r"RHumid"):
+        parse_toa5(text.replace("RH_Avg", "RHumid"))
 
 
 def test_optional_columns_absent_give_nan():

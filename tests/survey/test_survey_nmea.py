@@ -85,7 +85,7 @@ def test_dates_without_rmc_use_fallback_and_roll_over():
     text = "\n".join(gga_sentence(t0 + k, 35.0, 33.0, 1.0, 4, 9, 1.0) for k in range(4))
     log = parse_nmea(text, fallback_date_s=parse_utc("2026-11-15T12:00:00Z"))
     np.testing.assert_allclose(log.time_s, t0 + np.arange(4.0))
-    with pytest.raises(InvalidInput, match="no RMC"):
+    with pytest.raises(InvalidInput, match="no valid RMC"):
         parse_nmea(text)
 
 
@@ -96,7 +96,8 @@ def test_bad_checksum_and_junk_are_counted_and_skipped():
                       rmc_sentence(1.8e9 + 2, 35.0, 33.0)])
     log = parse_nmea(text)
     assert len(log) == 2
-    assert log.bad_checksum_lines == (2, 4)  # a missing checksum counts as a wrong one
+    assert log.bad_checksum_lines == (2,)
+    assert log.no_checksum_lines == (4,)  # a missing checksum is reported as such
     assert log.unparseable_lines == (3,)
 
 
@@ -151,8 +152,9 @@ def test_property_gga_round_trip(lat, lon, tod, q):
     log = parse_nmea(gga_sentence(t, lat, lon, 100.0, q, 10, 1.0) + "\n" +
                      rmc_sentence(t, lat, lon))
     assert log.time_s[0] == pytest.approx(t, abs=1e-6)
-    if q == 0:
-        assert math.isnan(log.lat_deg[0])
+    assert log.fix_quality[0] == q
+    if q not in (1, 2, 3, 4, 5):  # 6-8 dead reckoning, manual, simulator: not fixes
+        assert math.isnan(log.lat_deg[0]) and not log.usable[0]
     else:
         assert log.lat_deg[0] == pytest.approx(lat, abs=2e-9)
         assert log.lon_deg[0] == pytest.approx(lon, abs=2e-9)
@@ -160,7 +162,7 @@ def test_property_gga_round_trip(lat, lon, tod, q):
 
 @FUZZ
 @given(st.floats(-89.99, 89.99), st.floats(-179.99, 179.99), st.floats(0, 86399.9),
-       st.integers(1, 9), st.integers(0, 40), st.floats(-100, 9000))
+       st.integers(1, 5), st.integers(0, 40), st.floats(-100, 9000))
 def test_field_parsing_agrees_with_pynmea2(lat, lon, tod, q, ns, alt):
     t = parse_utc("2026-11-15T00:00:00Z") + round(tod, 3)
     gga = gga_sentence(t, lat, lon, alt, q, ns, 1.25)

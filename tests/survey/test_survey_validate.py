@@ -190,14 +190,15 @@ PROBLEMS = {
                                     "folder)"),
     "bad_json": (_bad_json, "survey.json: line 2 column 8: not valid JSON: Expecting ':' "
                             "delimiter"),
-    "no_fix": (_no_fix, "gnss.nmea: GGA: no epoch has a position fix (fix quality 0 "
-                        "throughout)"),
+    "no_fix": (_no_fix, "gnss.nmea: GGA: no epoch has a position fix (fix quality "
+                        "1-5)"),
     "gnss_short": (_gnss_short, "gnss.nmea: position fixes from 2026-11-15T00:00:00Z to "
                                 "2026-11-15T00:08:10Z does not cover the frames"),
     "fix_gap": (_fix_gap, "gnss.nmea: GGA: 6 frame(s) farther than 600 s from any position "
                           "fix, first at 2026-11-15T00:26:00Z"),
-    "weather_units": (_weather_units, "weather.dat: line 3: BP_hPa_Avg: unit 'kpa', expected "
-                                      "'hPa'"),
+    "weather_units": (_weather_units, "weather.dat: line 5: BP_hPa_Avg (pressure_hpa): 51 "
+                      "value(s) outside 924.176..1064.18 hPa at 160 m, first line 5: 10050 "
+                      "hPa (wrong column or unit?)"),
     "weather_nan": (_weather_all_nan, "weather.dat: air_temp_c: all values missing (NAN)"),
     "blackbody": (_missing_bb, "blackbody/frames.csv: blackbody: event 1 band 0: no frames of "
                                "blackbody 2"),

@@ -39,8 +39,10 @@ class SimulatedWeatherStation:
     def __init__(self, records: WeatherLog, clock: Callable[[], float], page: int = 60,
                  station: str = "clearfast_sim") -> None:
         self.times_s = np.asarray(records.time_s, dtype=float)
-        self.lines = [(line + "\r\n").encode("ascii")
-                      for line in toa5_text(records, station).split("\r\n")[4:] if line]
+        text = toa5_text(records, station).split("\r\n")
+        self.lines = [(line + "\r\n").encode("ascii") for line in text[4:] if line]
+        #: the field-name and units lines each reply starts with (columns go by name)
+        self.header = "".join(line + "\r\n" for line in text[1:3]).encode("ascii")
         self.clock = clock
         self.page = int(page)
         self.requests: list[int] = []
@@ -66,7 +68,7 @@ class SimulatedWeatherStation:
             self.requests.append(first)
             exist = int(np.searchsorted(self.times_s, self.clock(), side="right"))
             last = min(exist, first + self.page)
-            reply = b"".join(self.lines[first:last])
+            reply = self.header + b"".join(self.lines[first:last])
             reply += b"MORE\r\n" if last < exist else b"END\r\n"
         with self._lock:
             self._out += reply
