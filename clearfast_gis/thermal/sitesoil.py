@@ -7,9 +7,10 @@ temperature. A sandy soil's band emissivity is 0.84-0.96 (quartz reststrahlen at
 and it reflects the cold sky, so its apparent temperature is several kelvin below its kinetic
 temperature, with another diurnal amplitude. Fitted to it, the surface terms of the 1-D model
 (albedo, convective scale) settle far from the soil's (on the demo survey: albedo 0.55 and
-``hc_scale`` 0.2, the bound, against 0.29 and 0.75 from the thermocouple) and put every buried
-mine about 1 cm too shallow (BENCHMARKS.md, "Depth bias"). A thermocouple reads the kinetic
-temperature the model computes.
+``hc_scale`` 0.2, the bound, against 0.29 and 0.75 from the thermocouple); together with a
+moist-sand heat capacity for a half-moist soil they put the buried mines about 1 cm too
+shallow (BENCHMARKS.md, "Depth bias"). A thermocouple reads the kinetic temperature the model
+computes.
 """
 
 from __future__ import annotations
