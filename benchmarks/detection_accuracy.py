@@ -57,13 +57,14 @@ def _spread(v) -> str:
 def depth_figures(depths) -> dict:
     """Depth and diffusivity figures of matched mines (DepthRow list)."""
     ok = [d for d in depths if d.status == "ok" and np.isfinite(d.depth_m)]
-    err = {d.mine_id: d.depth_m - d.true_depth_m for d in ok}
 
     def mae(lo, hi):
-        v = [abs(err[d.mine_id]) for d in ok if lo - 1e-9 <= d.true_depth_m <= hi + 1e-9]
+        v = [abs(d.depth_m - d.true_depth_m) for d in ok
+             if lo - 1e-9 <= d.true_depth_m <= hi + 1e-9]
         return (100 * float(np.mean(v)) if v else float("nan")), len(v)
 
-    z = np.array([abs(err[d.mine_id]) / d.depth_sigma_m for d in ok if d.depth_sigma_m > 0])
+    z = np.array([abs(d.depth_m - d.true_depth_m) / d.depth_sigma_m for d in ok
+                  if d.depth_sigma_m > 0])
     shallow = [d for d in ok if d.true_depth_m <= 0.04 + 1e-9 and np.isfinite(d.alpha_m2s)]
     alpha_ok = [abs(d.alpha_m2s / d.true_alpha_m2s - 1) <= 0.25 for d in shallow]
     za = np.array([abs(np.log(d.alpha_m2s / d.true_alpha_m2s))
