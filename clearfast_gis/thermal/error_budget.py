@@ -36,6 +36,7 @@ import dataclasses
 import math
 
 from clearfast_gis.thermal.inversion import MAX_DEPTH_SIGMA_M, Inversion
+from clearfast_gis.thermal.table import DEFAULT_DEPTHS_M
 
 DEPTH_TERMS_M = {"object_height": 0.003, "blur_footprint": 0.003, "background_ring": 0.001,
                  "soil_terms": 0.002, "registration": 0.001}
@@ -54,13 +55,20 @@ def chain_depth_sigma_m(depth_m: float) -> float:
     return math.hypot(const, DEPTH_RELATIVE * max(depth_m, 0.0))
 
 
+MAX_REPORTED_DEPTH_SIGMA_M = float(DEFAULT_DEPTHS_M[-1])
+"""Depth sigmas are capped at the table's depth range, m (20 cm): a flat fit's covariance can
+claim metres, which says no more than that the depth is undetermined."""
+
+
 def with_chain_errors(inv: Inversion) -> Inversion:
-    """``inv`` with the chain's error terms added in quadrature to its fit sigmas.
+    """``inv`` with the chain's error terms added in quadrature to its fit sigmas (the depth
+    sigma capped at :data:`MAX_REPORTED_DEPTH_SIGMA_M`).
 
     An estimate that was ``ok`` becomes ``not_characterised`` when the total depth sigma
     exceeds :data:`~clearfast_gis.thermal.inversion.MAX_DEPTH_SIGMA_M`.
     """
     sd = math.hypot(inv.depth_sigma_m, chain_depth_sigma_m(inv.depth_m))
+    sd = min(sd, MAX_REPORTED_DEPTH_SIGMA_M) if math.isfinite(sd) else MAX_REPORTED_DEPTH_SIGMA_M
     sla = math.hypot(inv.log10_alpha_sigma, LOG10_ALPHA_TERM)
     status = inv.status
     if status == "ok" and sd > MAX_DEPTH_SIGMA_M:
