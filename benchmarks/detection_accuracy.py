@@ -141,7 +141,7 @@ def main() -> None:
         t_sim = time.perf_counter() - t0
         t0 = time.perf_counter()
         manifest = process_survey(survey, products, ProcessOptions(),
-                                  redo_anomalies=args.redo_anomalies)
+                                  from_stage="detection" if args.redo_anomalies else None)
         t_proc = time.perf_counter() - t0
         s = score_against_truth(survey, products)
         ranked.append((tag, score_ranked(survey, products)))

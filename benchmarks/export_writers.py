@@ -36,6 +36,9 @@ def suspects_records(n: int, rng: np.random.Generator) -> list[dict]:
 
 
 def main() -> None:
+    import geopandas as gpd
+    import shapely
+
     from clearfast_gis.export import (
         default_styles,
         export_mine_action,
@@ -73,8 +76,15 @@ def main() -> None:
                 "survey_id": "bench", "crs": {"epsg": 32636},
                 "time": {"start_utc": "2026-11-15T00:00:00Z", "end_utc": "2026-11-16T00:00:00Z"},
                 "software": {"name": "clearfast-gis", "version": "0.1.0"}})
-            t = median_s(lambda: export_mine_action(tmp, tmp / "ma"), args.repeat)
-            rows.append((f"export_mine_action (GeoPackage + CSV), {n} suspects", t))
+            # the export also needs the survey footprint (the surveyed-area record)
+            footprint = gpd.GeoDataFrame(
+                {"scans": [60]}, geometry=[shapely.box(532780, 3891965, 532800, 3891985)],
+                crs=32636)
+            write_geopackage(tmp / "anomalies.gpkg", {"suspects": frame, "footprint": footprint})
+            t = median_s(lambda: export_mine_action(tmp, tmp / "ma", include_all=True),
+                         args.repeat)
+            rows.append((f"export_mine_action (GeoPackage + CSV + XLSX, all suspects as "
+                         f"evidence, hazard proposals), {n} suspects", t))
     print("| operation | median |")
     print("|---|---|")
     for name, t in rows:

@@ -32,13 +32,14 @@ from clearfast_gis.export.cog import read_mosaic
 from clearfast_gis.geometry.grid import GroundGrid
 from clearfast_gis.mosaic import FrameInput, build_scan_mosaic, temporal_residual
 from clearfast_gis.pipeline.frames import scan_frames
-from clearfast_gis.pipeline.run import _air_function, mosaic_rel, open_context
+from clearfast_gis.pipeline.inputs import air_function, open_context
+from clearfast_gis.pipeline.state import mosaic_rel
 
 
 def true_pose_mosaic(ctx, scan: int, grid: GroundGrid, truth: dict) -> np.ndarray:
     """Band 0 of ``scan``'s mosaic (float32 (H, W), degrees C) projected with the true poses."""
     frames = [FrameInput(f.index, f.values[:1], truth[(scan, f.index, 0)])
-              for f in scan_frames(ctx, scan, _air_function(ctx))]
+              for f in scan_frames(ctx, scan, air_function(ctx))]
     return build_scan_mosaic(frames, ctx.camera, grid, 1, coregister=False).values[0]
 
 

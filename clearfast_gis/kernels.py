@@ -1,24 +1,14 @@
 """Which implementation the chain's heavy kernels run: ours or the reference libraries.
 
 ``fast`` (the default) runs the project's kernels (numba, OpenCV); ``reference`` runs the
-same chain on the mature reference implementations each kernel is checked against:
+same chain on the mature reference implementations each kernel is checked against. Every
+kernel that has both is one entry of :data:`REGISTRY` (``{name: KernelPair(fast,
+reference)}``); a public function runs ``kernel(name)(...)``, the active set's implementation,
+and holds no branch of its own. The table in ``docs/performance.md`` is
+:func:`markdown_table` (``tests/kernels/test_registry.py`` checks it, and runs both
+implementations of every entry on the same input).
 
-=====================  =========================================  ===========================
-kernel                 fast                                       reference
-=====================  =========================================  ===========================
-reconstruction         OpenCV disk erosion + hybrid queue (numba)  scikit-image erosion and
-                                                                   ``reconstruction``
-MI registration        Parzen-window Mattes MI with its analytic   SimpleITK Mattes MI,
-                       gradient (numba), bounded L-BFGS            regular-step gradient
-ground projection      cell-centre maps (numba) + ``cv2.remap``    ``Camera.project`` (numpy)
-                                                                   + scipy ``map_coordinates``
-inverse Planck         radiance-uniform table (numba)              the paper's 0.1 K table +
-                                                                   ``np.interp``
-heat-equation steps    band Cholesky, whole time loop compiled     scipy sparse LU, time loop
-                       (numba, GIL released)                       in Python
-=====================  =========================================  ===========================
-
-The thermal inversion itself is the same in both: every anomaly is inverted on one site
+The thermal inversion itself is the same in both sets: every anomaly is inverted on one site
 table of forward runs (``benchmarks/thermal_inversion.py`` compares it with a model run per
 anomaly); the kernel sets differ in how each forward run steps the heat equation.
 
@@ -27,8 +17,10 @@ The choice is process-wide (``clearfast process --kernels``); :func:`use` sets i
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+import importlib
+from collections.abc import Callable, Iterator
 from contextlib import contextmanager
+from dataclasses import dataclass
 
 KERNELS = ("fast", "reference")
 """The kernel sets."""
@@ -63,3 +55,99 @@ def use(name: str) -> Iterator[None]:
         yield
     finally:
         _active = before
+
+
+@dataclass(frozen=True)
+class KernelPair:
+    """The two implementations of one kernel.
+
+    Attributes
+    ----------
+    fast, reference : str
+        ``module:function`` of each implementation (imported on first use); both take the
+        same arguments and return the same kind of result.
+    fast_text, reference_text : str
+        What each one is, for the documentation table.
+    """
+
+    fast: str
+    reference: str
+    fast_text: str
+    reference_text: str
+
+    def implementation(self, kernel_set: str) -> Callable:
+        """The implementation of ``kernel_set`` (``"fast"`` or ``"reference"``)."""
+        if kernel_set not in KERNELS:
+            raise ValueError(f"unknown kernel set {kernel_set!r}")
+        module, name = getattr(self, kernel_set).split(":")
+        return getattr(importlib.import_module(module), name)
+
+
+REGISTRY: dict[str, KernelPair] = {
+    "top_hat_by_reconstruction": KernelPair(
+        "clearfast_gis.detection.morphology:_top_hat_fast",
+        "clearfast_gis.detection.reference:top_hat_reference",
+        "OpenCV disk erosion + hybrid-queue reconstruction (numba)",
+        "scikit-image erosion and `reconstruction`"),
+    "bottom_hat_by_reconstruction": KernelPair(
+        "clearfast_gis.detection.morphology:_bottom_hat_fast",
+        "clearfast_gis.detection.reference:bottom_hat_reference",
+        "OpenCV disk dilation + hybrid-queue reconstruction (numba)",
+        "scikit-image dilation and `reconstruction`"),
+    "binary_opening_by_reconstruction": KernelPair(
+        "clearfast_gis.detection.morphology:_binary_opening_fast",
+        "clearfast_gis.detection.reference:binary_opening_reference",
+        "OpenCV disk erosion + binary reconstruction (numba)",
+        "scikit-image erosion and `reconstruction` (8-connected)"),
+    "register_conformal": KernelPair(
+        "clearfast_gis.registration.conformal:_register_fast",
+        "clearfast_gis.registration.conformal:_reference",
+        "Parzen-window Mattes MI with its analytic gradient (numba), bounded L-BFGS",
+        "SimpleITK Mattes MI, regular-step gradient"),
+    "ground_maps": KernelPair(
+        "clearfast_gis.geometry.projection:_ground_maps_fast",
+        "clearfast_gis.geometry.projection:_ground_maps_reference",
+        "cell-centre maps over the seen window (numba)",
+        "`Camera.project` of every cell (numpy)"),
+    "resample": KernelPair(
+        "clearfast_gis.mosaic.project:_resample_cv2",
+        "clearfast_gis.mosaic.project:_resample_scipy",
+        "`cv2.GaussianBlur` + `cv2.remap`",
+        "scipy `gaussian_filter` + `map_coordinates`"),
+    "inverse_planck": KernelPair(
+        "clearfast_gis.radiometry.table:_temperature_uniform",
+        "clearfast_gis.radiometry.table:_temperature_paper",
+        "radiance-uniform table (numba)",
+        "the paper's 0.1 K table + `np.interp`"),
+    "apparent_frame": KernelPair(
+        "clearfast_gis.radiometry.stage:_apparent_fused",
+        "clearfast_gis.radiometry.stage:_apparent_reference",
+        "calibration, atmosphere and inverse Planck fused per pixel (numba)",
+        "`raw_to_apparent` step by step (numpy)"),
+    "heat_equation": KernelPair(
+        "clearfast_gis.thermal.solver:_run_band",
+        "clearfast_gis.thermal.solver:_run_splu",
+        "band Cholesky, whole time loop compiled (numba, GIL released)",
+        "scipy sparse LU, time loop in Python"),
+}
+"""Every kernel with a fast and a reference implementation."""
+
+
+def kernel(name: str) -> Callable:
+    """The active set's implementation of kernel ``name`` (:data:`REGISTRY`).
+
+    Examples
+    --------
+    >>> with use("reference"):
+    ...     kernel("heat_equation").__name__
+    '_run_splu'
+    """
+    return REGISTRY[name].implementation(_active)
+
+
+def markdown_table() -> str:
+    """The registry as the Markdown table of ``docs/performance.md``."""
+    rows = ["| kernel | fast (default) | reference |", "|---|---|---|"]
+    rows += [f"| `{name}` | {k.fast_text} | {k.reference_text} |"
+             for name, k in REGISTRY.items()]
+    return "\n".join(rows)

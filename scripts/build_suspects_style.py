@@ -38,7 +38,17 @@ os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
 REPO = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(REPO))
 
-MINE = "\"class_cue\" IN ('at_mine', 'ap_mine')"
+def _mine_expression() -> str:
+    from clearfast_gis.export.mine_action import DEFAULT_MIN_LIKELIHOOD, MINE_CUES
+
+    cues = ", ".join(f"'{c}'" for c in MINE_CUES)
+    return (f"coalesce(attribute('p_mine') >= {DEFAULT_MIN_LIKELIHOOD}, "
+            f"\"class_cue\" IN ({cues}))")
+
+
+MINE = _mine_expression()
+"""Mine indications, as the mine-action export selects them: a mine likelihood ``p_mine`` from
+the export's default threshold when the products have one, else an AT/AP class cue."""
 SHORT_ID = ("'S-' || lpad(to_string(to_int(regexp_substr(\"anomaly_id\", '(\\\\d+)$'))), "
             "3, '0')")
 CUE_RANK = ("CASE WHEN \"class_cue\" = 'at_mine' THEN 0 WHEN \"class_cue\" = 'ap_mine' THEN 1 "
@@ -148,14 +158,16 @@ def renderer():
 
     root = QgsRuleBasedRenderer.Rule(None)
     rules = (
-        ("AT mine indication", "\"class_cue\" = 'at_mine'",
+        ("AT mine indication", f"({MINE}) AND \"class_cue\" = 'at_mine'",
          _marker("triangle", C["at_mine"], 5.0, 1.0), True),
-        ("AP mine indication", "\"class_cue\" = 'ap_mine'",
+        ("AP mine indication", f"({MINE}) AND \"class_cue\" = 'ap_mine'",
          _marker("triangle", C["ap_mine"], 4.0, 1.0), True),
-        ("Other suspect", "\"class_cue\" NOT IN ('at_mine', 'ap_mine', 'clutter') "
-         "OR \"class_cue\" IS NULL",
+        ("Mine indication, other cue",
+         f"({MINE}) AND coalesce(\"class_cue\" NOT IN ('at_mine', 'ap_mine'), true)",
+         _marker("circle", C["at_mine"], 3.2, 1.0), True),
+        ("Other suspect", f"NOT ({MINE}) AND coalesce(\"class_cue\" <> 'clutter', true)",
          _marker("circle", C["unknown"], 2.4, 0.6, "90,90,90,255"), True),
-        ("Clutter", "\"class_cue\" = 'clutter'",
+        ("Clutter", f"NOT ({MINE}) AND \"class_cue\" = 'clutter'",
          _marker("circle", C["clutter"], 2.0, 0.6, "90,90,90,255"), False),
     )
     for label, expr, symbol, active in rules:

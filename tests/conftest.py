@@ -60,6 +60,17 @@ def _build_once(name: str, build) -> Path:
     return target
 
 
+SLOW_FIXTURES = frozenset({"demo_survey", "demo_products", "demo_drift_mosaics", "acquired"})
+"""Fixtures that simulate, acquire or process a whole survey (minutes on a cold cache): every
+test using one is marked ``slow``, so ``pytest -m "not slow"`` is the quick loop."""
+
+
+def pytest_collection_modifyitems(config, items) -> None:
+    for item in items:
+        if SLOW_FIXTURES & set(getattr(item, "fixturenames", ())):
+            item.add_marker(pytest.mark.slow)
+
+
 @pytest.fixture(scope="session")
 def repo_root() -> Path:
     return REPO
@@ -90,5 +101,5 @@ def demo_drift_mosaics() -> tuple[Path, Path]:
     survey = _build_once("demo-drift-survey",
                          lambda t: simulate_survey(t, preset("demo"), seed=1, drift=True))
     products = _build_once("demo-drift-mosaics", lambda t: process_survey(
-        survey, t, ProcessOptions(invert=False), until="mosaics"))
+        survey, t, ProcessOptions(invert=False), until="residuals_and_footprint"))
     return survey, products

@@ -98,3 +98,17 @@ def test_help_states_the_real_defaults():
         assert f"[default: {d.max_anomalies}; x>=1]" in text
         assert "a quarter of the images covering each pixel" in text
         assert "half the scans" not in text
+
+
+def test_process_from_after_until_is_a_usage_error(tmp_path):
+    from click.testing import CliRunner
+
+    from clearfast_gis.cli.main import group
+
+    r = CliRunner().invoke(group, ["process", str(tmp_path), "-o", str(tmp_path / "p"),
+                                   "--from", "products", "--until", "mosaics"])
+    assert r.exit_code == 2
+    assert "--from products comes after --until mosaics" in r.output
+    r = CliRunner().invoke(group, ["process", str(tmp_path), "-o", str(tmp_path / "p"),
+                                   "--until", "mosaic"])
+    assert r.exit_code == 2 and "residuals_and_footprint" in r.output

@@ -58,7 +58,16 @@ def interpolation_weights(time_s: np.ndarray, node_times_s: np.ndarray
 
 def attitude_at(time_s: np.ndarray, node_times_s: np.ndarray, nodes_rpy_deg: np.ndarray
                 ) -> np.ndarray:
-    """Platform attitude (N, 3), degrees, at ``time_s`` (N,) from the adjusted nodes (S, 3)."""
+    """Platform attitude (N, 3), degrees, at ``time_s`` (N,) from the adjusted nodes (S, 3):
+    linear between the nodes, extrapolated linearly past the ends.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> attitude_at(np.array([150.0]), np.array([100.0, 200.0]),
+    ...             np.array([[0.0, 0.2, 0.0], [0.0, 0.4, 1.0]]))
+    array([[0. , 0.3, 0.5]])
+    """
     i0, i1, w1 = interpolation_weights(time_s, node_times_s)
     nodes = np.asarray(nodes_rpy_deg, dtype=float)
     return nodes[i0] * (1.0 - w1)[:, None] + nodes[i1] * w1[:, None]

@@ -134,6 +134,11 @@ def neighbour_pairs(order: list[int], offsets: tuple[int, ...] = NEIGHBOUR_OFFSE
         Scans in time order.
     offsets : tuple of int
         Steps along ``order`` (e.g. -1: the previous scan).
+
+    Examples
+    --------
+    >>> neighbour_pairs([3, 5, 9], offsets=(-1, 1))
+    [(3, 5), (5, 3), (5, 9), (9, 5)]
     """
     return [(s, order[k + o]) for k, s in enumerate(order) for o in offsets
             if 0 <= k + o < len(order)]

@@ -30,7 +30,8 @@ def command(survey, products, resume, progress_mode, **params):
 
     options = build_options(params)
     manifest = process_survey(survey, products, options, resume=resume,
-                              progress=make_progress(progress_mode), until="mosaics")
+                              progress=make_progress(progress_mode),
+                              until="residuals_and_footprint")
     if progress_mode == "json":
         import json
 

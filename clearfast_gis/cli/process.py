@@ -14,6 +14,7 @@ from clearfast_gis.cli.options import (
     station_profile_opt,
     survey_arg,
 )
+from clearfast_gis.pipeline.stages import STAGE_NAMES
 
 
 @click.command("process", short_help="Run the whole chain: survey folder to products.")
@@ -22,21 +23,31 @@ from clearfast_gis.cli.options import (
 @mosaic_options
 @detection_options
 @click.option("--no-invert", is_flag=True, help="Skip the depth/diffusivity estimation.")
+@click.option("--from", "from_stage", type=click.Choice(STAGE_NAMES), default=None,
+              help="Redo this stage and the ones after it even when up to date (the stages "
+              "before it resume).")
+@click.option("--until", type=click.Choice(STAGE_NAMES), default=STAGE_NAMES[-1],
+              show_default=True, help="Stop after this stage.")
 @station_profile_opt
 @resume_opt
 @progress_opt
-def command(survey, products, no_invert, station_profile, resume, progress_mode, **params):
+def command(survey, products, no_invert, from_stage, until, station_profile, resume,
+            progress_mode, **params):
     """Calibrate, mosaic, detect and characterise a survey; write COG mosaics,
     anomalies.gpkg, report.html and products.json into PRODUCTS.
 
-    An interrupted run continues where it stopped (--resume, the default).
+    An interrupted run continues where it stopped (--resume, the default): each stage keeps
+    its finished work while the parameters it depends on are unchanged.
     """
     from clearfast_gis.cli.options import build_options
     from clearfast_gis.pipeline import process_survey
 
+    if from_stage is not None and STAGE_NAMES.index(from_stage) > STAGE_NAMES.index(until):
+        raise click.UsageError(f"--from {from_stage} comes after --until {until}")
     options = build_options(params, invert=not no_invert)
     progress = make_progress(progress_mode)
     manifest = process_survey(survey, products, options, resume=resume, progress=progress,
+                              until=until, from_stage=from_stage,
                               station_profile=station_profile)
     _summary(products, manifest, progress_mode)
 
@@ -45,7 +56,7 @@ def _summary(products: str, manifest: dict, progress_mode: str) -> None:
     import json
     from pathlib import Path
 
-    n = _count_suspects(Path(products))
+    n = _count_suspects(Path(products)) if (Path(products) / "anomalies.gpkg").exists() else 0
     if progress_mode == "json":
         click.echo(json.dumps({"event": "done", "products": str(products), "suspects": n,
                                "timings_s": manifest.get("timings_s", {})}))

@@ -121,10 +121,11 @@ def top_hat_by_reconstruction(image: np.ndarray, d1_px: float) -> np.ndarray:
     f = np.asarray(image)
     if f.dtype.kind != "f":
         f = f.astype(np.float32)
-    if kernels.reference():
-        from clearfast_gis.detection.reference import top_hat_reference
+    return kernels.kernel("top_hat_by_reconstruction")(f, d1_px)
 
-        return top_hat_reference(f, d1_px)
+
+def _top_hat_fast(f: np.ndarray, d1_px: float) -> np.ndarray:
+    """:func:`top_hat_by_reconstruction` on the fast kernels (float ``f``)."""
     return f - reconstruction_by_dilation(erode_disk(f, d1_px), f)
 
 
@@ -137,10 +138,11 @@ def bottom_hat_by_reconstruction(image: np.ndarray, d1_px: float) -> np.ndarray:
     f = np.asarray(image)
     if f.dtype.kind != "f":
         f = f.astype(np.float32)
-    if kernels.reference():
-        from clearfast_gis.detection.reference import bottom_hat_reference
+    return kernels.kernel("bottom_hat_by_reconstruction")(f, d1_px)
 
-        return bottom_hat_reference(f, d1_px)
+
+def _bottom_hat_fast(f: np.ndarray, d1_px: float) -> np.ndarray:
+    """:func:`bottom_hat_by_reconstruction` on the fast kernels (float ``f``)."""
     return reconstruction_by_erosion(dilate_disk(f, d1_px), f) - f
 
 
@@ -159,8 +161,9 @@ def binary_opening_by_reconstruction(binary: np.ndarray, d2_px: float) -> np.nda
     g = np.asarray(binary, dtype=bool)
     if not g.any():
         return g.copy()
-    if kernels.reference():
-        from clearfast_gis.detection.reference import binary_opening_reference
+    return kernels.kernel("binary_opening_by_reconstruction")(g, d2_px)
 
-        return binary_opening_reference(g, d2_px)
+
+def _binary_opening_fast(g: np.ndarray, d2_px: float) -> np.ndarray:
+    """:func:`binary_opening_by_reconstruction` on the fast kernels (bool ``g``)."""
     return binary_reconstruction(erode_disk(g, d2_px), g)

@@ -14,7 +14,13 @@ from clearfast_gis.progress import NULL_PROGRESS, Progress
 
 
 def disk_px(size_m: float, pixel_size_m: float, minimum: int = 3) -> int:
-    """A structuring-element diameter in metres as an odd number of pixels (>= minimum)."""
+    """A structuring-element diameter in metres as an odd number of pixels (>= minimum).
+
+    Examples
+    --------
+    >>> disk_px(0.5, 0.02), disk_px(0.06, 0.02), disk_px(0.01, 0.02)
+    (25, 3, 3)
+    """
     n = max(minimum, int(round(size_m / pixel_size_m)))
     return n if n % 2 == 1 else n + 1
 
@@ -79,6 +85,12 @@ def coverage_level(fraction: float, covered: np.ndarray, n_scans: int, n_bands: 
     Returns
     -------
     float (H, W)
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> coverage_level(0.25, np.array([[48, 24, 4]]), n_scans=48, n_bands=1)
+    array([[12.,  6.,  3.]])
     """
     floor = max(1, min(MIN_SUPPORT_SCANS * n_bands, round(fraction * n_scans * n_bands)))
     return np.maximum(np.round(fraction * covered), floor).astype(np.float64)

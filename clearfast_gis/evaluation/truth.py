@@ -284,8 +284,8 @@ def placement_errors(survey: str | Path, products: str | Path, step_px: int = 8,
 
     from clearfast_gis.pipeline.adjustment import REFINED_UNIT, UNIT, placement_attitude
     from clearfast_gis.pipeline.frames import frame_poses
-    from clearfast_gis.pipeline.run import mosaic_rel, open_context
-    from clearfast_gis.pipeline.state import STATE_DIR
+    from clearfast_gis.pipeline.inputs import open_context
+    from clearfast_gis.pipeline.state import STATE_DIR, mosaic_rel, source_rel
 
     products = Path(products)
     manifest = json.loads((products / "products.json").read_text())
@@ -311,8 +311,8 @@ def placement_errors(survey: str | Path, products: str | Path, step_px: int = 8,
     cam, fr = ctx.camera, ctx.survey.frames
     disp = {}
     for s in scans:
-        source = np.load(products / STATE_DIR / f"source_{s:03d}.npy")[rows, cols].ravel()
-        rec = units[f"scan_{s:03d}"]
+        source = np.load(products / source_rel(s))[rows, cols].ravel()
+        rec = units[f"mosaics/scan_{s:03d}"]
         frame_rows = ctx.survey.scan_rows(s, 0)
         frame_rows = frame_rows[np.isin(fr.position[frame_rows], np.unique(source))]
         t = fr.time_s[frame_rows]

@@ -54,10 +54,8 @@ def hazard_clusters(easting_m: Sequence[float], northing_m: Sequence[float],
     points = shapely.points(e, n)
     union = shapely.union_all(shapely.buffer(points, buffer_m, quad_segs=QUAD_SEGMENTS))
     parts = list(getattr(union, "geoms", [union]))
-    clusters = []
-    for part in parts:
-        members = [i for i in range(e.size) if part.covers(points[i])]
-        clusters.append((part, members))
+    clusters = [(part, np.flatnonzero(shapely.covers(part, points)).tolist())
+                for part in parts]
     clusters.sort(key=lambda c: (-round(c[0].centroid.y, 2), round(c[0].centroid.x, 2)))
     return clusters
 

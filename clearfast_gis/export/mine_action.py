@@ -35,8 +35,6 @@ from clearfast_gis.timeutil import format_utc, parse_utc
 METHOD = "stand-off thermal IR"
 EVIDENCE = "indirect"
 LAND_CLASS = "indication"
-HAZARD_CLASS = "suspected hazardous area (proposed)"
-SURVEY_RESULT = "surveyed by stand-off thermal IR; not cleared"
 LAYER_NAME = "indications"
 HAZARD_LAYER = "hazard_proposals"
 AREA_LAYER = "surveyed_area"
@@ -84,49 +82,10 @@ MINE_ACTION_FIELDS: dict[str, str] = {
 }
 """Columns of the evidence points (layer ``indications``, ``mine_action.csv``), in order."""
 
-HAZARD_FIELDS: dict[str, str] = {
-    "imsma_id": "Stable text id CF-<SURVEY>-H<NN>",
-    "imsma_links": "Empty: links are made in IMSMA Core",
-    "survey_id": "Survey id (products.json)",
-    "survey_date_utc": "Survey start, ISO 8601 UTC",
-    "land_class": f'Always "{HAZARD_CLASS}"',
-    "method": f'Always "{METHOD}"',
-    "evidence": f'Always "{EVIDENCE}"',
-    "organisation": "Surveying organisation",
-    "buffer_m": "Radius of the disc around each mine indication, metres",
-    "n_indications": "Mine indications inside",
-    "evidence_ids": "imsma_id of those indications, comma-separated",
-    "area_m2": "Area in the survey's UTM CRS, square metres",
-    "centroid_lat_deg": "Centroid latitude, WGS84 decimal degrees",
-    "centroid_lon_deg": "Centroid longitude, WGS84 decimal degrees",
-    "wkt": "Polygon in WGS84 (lon lat), WKT (CSV only)",
-}
-"""Columns of the hazard polygon proposals (layer and CSV)."""
-
-AREA_FIELDS: dict[str, str] = {
-    "imsma_id": "Stable text id CF-<SURVEY>-SA",
-    "imsma_links": "Empty: links are made in IMSMA Core",
-    "survey_id": "Survey id (products.json)",
-    "survey_start_utc": "Survey start, ISO 8601 UTC",
-    "survey_end_utc": "Survey end, ISO 8601 UTC",
-    "method": f'Always "{METHOD}"',
-    "organisation": "Surveying organisation",
-    "result": f'Always "{SURVEY_RESULT}"',
-    "area_m2": "Area in the survey's UTM CRS, square metres",
-    "n_suspects": "Suspects found",
-    "n_indications": "Mine indications among them",
-    "n_hazard_proposals": "Hazard polygons proposed",
-    "utm_epsg": "EPSG code of the survey's UTM CRS",
-    "wkt": "Polygon in WGS84 (lon lat), WKT (CSV only)",
-}
-"""Columns of the surveyed-area record (layer and CSV)."""
-
 _DECIMALS = {"latitude_deg": 8, "longitude_deg": 8, "utm_easting_m": 3, "utm_northing_m": 3,
              "cue_confidence": 3, "mine_likelihood": 3, "depth_m": 4, "depth_sigma_m": 4,
              "diameter_m": 3, "buffer_m": 1, "area_m2": 2, "centroid_lat_deg": 8,
              "centroid_lon_deg": 8}
-WGS84_GRID_DEG = 1e-8
-"""Coordinates of the exported polygons are rounded to this grid (about 1 mm)."""
 
 
 @dataclass(frozen=True)
@@ -297,83 +256,6 @@ def _isnull(value) -> bool:
     return bool(pd.isna(value))
 
 
-def _to_wgs84(geoms, epsg: int):
-    """UTM polygons to WGS84, on a :data:`WGS84_GRID_DEG` grid, without repeated vertices."""
-    import shapely
-    from pyproj import Transformer
-
-    from clearfast_gis.export.hazard_areas import clean_polygon
-
-    fwd = Transformer.from_crs(int(epsg), 4326, always_xy=True)
-    out = []
-    for g in geoms:
-        ll = shapely.transform(g, lambda xy: np.column_stack(fwd.transform(xy[:, 0], xy[:, 1])))
-        out.append(clean_polygon(shapely.set_precision(ll, WGS84_GRID_DEG)))
-    return out
-
-
-def hazard_table(evidence, epsg: int, survey_id: str, organisation: str, buffer_m: float):
-    """Hazard polygon proposals around the mine indications of ``evidence``.
-
-    Sets ``hazard_ref`` of the evidence rows inside a proposal (in place).
-
-    Returns
-    -------
-    (pandas.DataFrame, list of shapely.Polygon)
-        Columns :data:`HAZARD_FIELDS` and the polygons in WGS84, one per proposal.
-    """
-    import pandas as pd
-    import shapely
-
-    from clearfast_gis.export.hazard_areas import hazard_clusters
-
-    mine = np.flatnonzero(evidence["mine_indication"].to_numpy() == "yes")
-    clusters = hazard_clusters(evidence["utm_easting_m"].to_numpy()[mine],
-                               evidence["utm_northing_m"].to_numpy()[mine], buffer_m)
-    code = survey_code(survey_id)
-    rows, polys = [], _to_wgs84([poly for poly, _ in clusters], epsg)
-    hazard_col = evidence.columns.get_loc("hazard_ref")
-    for k, ((poly, members), ll) in enumerate(zip(clusters, polys, strict=True), start=1):
-        hid = f"CF-{code}-H{k:02d}"
-        idx = sorted(int(mine[m]) for m in members)
-        evidence.iloc[idx, hazard_col] = hid
-        centre = ll.centroid
-        rows.append({
-            "imsma_id": hid, "imsma_links": "", "survey_id": survey_id,
-            "survey_date_utc": evidence["survey_date_utc"].iloc[0], "land_class": HAZARD_CLASS,
-            "method": METHOD, "evidence": EVIDENCE, "organisation": organisation,
-            "buffer_m": float(buffer_m), "n_indications": len(idx),
-            "evidence_ids": ",".join(evidence["imsma_id"].iloc[idx]),
-            "area_m2": float(poly.area), "centroid_lat_deg": centre.y,
-            "centroid_lon_deg": centre.x, "wkt": shapely.to_wkt(ll, rounding_precision=8)})
-    return pd.DataFrame(rows, columns=list(HAZARD_FIELDS)), polys
-
-
-def surveyed_area_table(footprint_utm, epsg: int, manifest: dict, organisation: str,
-                        n_suspects: int, n_indications: int, n_hazards: int):
-    """The surveyed-area record: the survey footprint (one polygon, UTM in, WGS84 out).
-
-    Returns
-    -------
-    (pandas.DataFrame, list of shapely geometry)
-        Columns :data:`AREA_FIELDS`, one row, and its WGS84 polygon.
-    """
-    import pandas as pd
-    import shapely
-
-    area = shapely.union_all(list(footprint_utm))
-    ll = _to_wgs84([area], epsg)
-    start = format_utc(parse_utc(manifest["time"]["start_utc"]), "seconds")
-    end = format_utc(parse_utc(manifest["time"]["end_utc"]), "seconds")
-    row = {"imsma_id": f"CF-{survey_code(manifest['survey_id'])}-SA", "imsma_links": "",
-           "survey_id": manifest["survey_id"], "survey_start_utc": start,
-           "survey_end_utc": end, "method": METHOD, "organisation": organisation,
-           "result": SURVEY_RESULT, "area_m2": float(area.area), "n_suspects": n_suspects,
-           "n_indications": n_indications, "n_hazard_proposals": n_hazards,
-           "utm_epsg": int(epsg), "wkt": shapely.to_wkt(ll[0], rounding_precision=8)}
-    return pd.DataFrame([row], columns=list(AREA_FIELDS)), ll
-
-
 def _read_layer(gpkg, layer: str, required: Sequence[str]):
     import pyogrio
 
@@ -387,15 +269,15 @@ def _read_layer(gpkg, layer: str, required: Sequence[str]):
     return frame
 
 
-def _manifest_times(manifest: dict, path: Path) -> str:
+def _manifest_times(manifest: dict, path: Path) -> tuple[str, str]:
+    """Survey start and end from ``products.json``, ISO 8601 UTC to the second."""
+    stamps = []
     for key in ("start_utc", "end_utc"):
         try:
-            stamp = format_utc(parse_utc(manifest["time"][key]), "seconds")
+            stamps.append(format_utc(parse_utc(manifest["time"][key]), "seconds"))
         except (KeyError, TypeError, ValueError):
             raise InvalidInput("not an ISO 8601 UTC time", path, f"time.{key}") from None
-        if key == "start_utc":
-            start = stamp
-    return start
+    return stamps[0], stamps[1]
 
 
 def export_mine_action(products_dir: str | os.PathLike, out_dir: str | os.PathLike | None = None,
@@ -443,6 +325,12 @@ def export_mine_action(products_dir: str | os.PathLike, out_dir: str | os.PathLi
         check_field_names,
         check_geometries,
     )
+    from clearfast_gis.export.land_release import (
+        AREA_FIELDS,
+        HAZARD_FIELDS,
+        hazard_table,
+        surveyed_area_table,
+    )
     from clearfast_gis.export.manifest import read_products_manifest
     from clearfast_gis.export.styles import mine_action_styles
     from clearfast_gis.export.xlsx import workbook_bytes
@@ -461,7 +349,7 @@ def export_mine_action(products_dir: str | os.PathLike, out_dir: str | os.PathLi
     gpkg_in = products / "anomalies.gpkg"
     if not gpkg_in.is_file():
         raise InvalidInput("missing: no anomalies.gpkg in the products folder", gpkg_in)
-    survey_date = _manifest_times(manifest, products / "products.json")
+    survey_date, survey_end = _manifest_times(manifest, products / "products.json")
     progress.start("mine_action", 3)
     try:
         suspects = _read_layer(gpkg_in, "suspects",
@@ -474,8 +362,9 @@ def export_mine_action(products_dir: str | os.PathLike, out_dir: str | os.PathLi
         hazards, hazard_polys = hazard_table(table, epsg, manifest["survey_id"],
                                              organisation, buffer_m)
         n_mine = int((table["mine_indication"] == "yes").sum())
-        area, area_polys = surveyed_area_table(footprint.geometry, epsg, manifest,
-                                               organisation, len(table), n_mine, len(hazards))
+        area, area_polys = surveyed_area_table(
+            footprint.geometry, epsg, manifest["survey_id"], (survey_date, survey_end),
+            organisation, (len(table), n_mine, len(hazards)))
         evidence = table if include_all else table[table["mine_indication"] == "yes"]
         evidence = evidence.reset_index(drop=True)
         points = gpd.points_from_xy(evidence["longitude_deg"], evidence["latitude_deg"])
@@ -491,7 +380,7 @@ def export_mine_action(products_dir: str | os.PathLike, out_dir: str | os.PathLi
             check_field_names([c for c in frame.columns if c != "geometry"], gpkg_out, name)
             check_geometries(list(frame.geometry), list(frame["imsma_id"]), gpkg_out, name)
         progress.advance()
-        end_s = parse_utc(manifest["time"]["end_utc"])
+        end_s = parse_utc(survey_end)
         write_geopackage(gpkg_out, layers, mine_action_styles(), timestamp_s=end_s)
         csv_out = write_text(out / CSV_NAME, table_to_csv(evidence))
         hazard_csv = write_text(out / HAZARD_CSV, table_to_csv(hazards, HAZARD_FIELDS))

@@ -1,12 +1,13 @@
 """Byte-reproducible XLSX workbooks of export tables (openpyxl), for spreadsheet imports.
 
-openpyxl stamps the workbook's creation time and every zip member's time with the clock; both
-are set to one given instant here, so the same tables always give the same bytes.
+openpyxl stamps the workbook's modification time (at save) and every zip member's time with the
+clock; both are set to one given instant here, so the same tables always give the same bytes.
 """
 
 from __future__ import annotations
 
 import io
+import re
 import zipfile
 from collections.abc import Mapping
 from datetime import datetime, timezone
@@ -68,7 +69,9 @@ def workbook_bytes(sheets: Mapping[str, tuple], decimals: Mapping[str, int],
 
 
 def _fixed_zip_times(data: bytes, when: datetime) -> bytes:
-    """The zip archive ``data`` with every member dated ``when`` (members in their order)."""
+    """The zip archive ``data`` with every member, and the workbook's modification time in
+    ``docProps/core.xml``, dated ``when`` (members in their order)."""
+    iso = when.strftime("%Y-%m-%dT%H:%M:%SZ")
     stamp = (max(when.year, 1980), when.month, when.day, when.hour, when.minute, when.second)
     out = io.BytesIO()
     with zipfile.ZipFile(io.BytesIO(data)) as src, \
@@ -77,5 +80,9 @@ def _fixed_zip_times(data: bytes, when: datetime) -> bytes:
             member = zipfile.ZipInfo(info.filename, date_time=stamp)
             member.compress_type = zipfile.ZIP_DEFLATED
             member.external_attr = 0o600 << 16
-            dst.writestr(member, src.read(info.filename))
+            content = src.read(info.filename)
+            if info.filename == "docProps/core.xml":
+                content = re.sub(rb"(<dcterms:modified[^>]*>)[^<]*(</dcterms:modified>)",
+                                 rb"\g<1>" + iso.encode() + rb"\g<2>", content)
+            dst.writestr(member, content)
     return out.getvalue()

@@ -105,8 +105,19 @@ def ground_maps(camera: Camera, pose: CameraPose, grid: GroundGrid,
         (behind the camera, beyond the horizon or outside the pixel-centre hull
         ``[0, W-1] x [0, H-1]``, so bilinear interpolation never reads outside the frame).
     """
-    if kernels.reference():
-        return reference_maps(camera, pose, grid, z)
+    return kernels.kernel("ground_maps")(camera, pose, grid, z, bound)
+
+
+def _ground_maps_reference(camera: Camera, pose: CameraPose, grid: GroundGrid, z: float,
+                           bound: bool) -> tuple[np.ndarray, np.ndarray]:
+    """:func:`ground_maps` on the reference kernels (every cell; ``bound`` changes nothing
+    in the maps)."""
+    return reference_maps(camera, pose, grid, z)
+
+
+def _ground_maps_fast(camera: Camera, pose: CameraPose, grid: GroundGrid, z: float,
+                      bound: bool) -> tuple[np.ndarray, np.ndarray]:
+    """:func:`ground_maps` on the fast kernels (numba, over the seen window)."""
     map_x = np.full(grid.shape, NOT_SEEN, dtype=np.float32)
     map_y = np.full(grid.shape, NOT_SEEN, dtype=np.float32)
     window = _seen_window(camera, pose, grid, z) if bound else (0, grid.height, 0, grid.width)

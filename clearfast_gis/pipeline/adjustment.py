@@ -7,6 +7,7 @@ import numpy as np
 from clearfast_gis.attitude.adjust import adjust_attitudes, attitude_at
 from clearfast_gis.attitude.neighbours import neighbour_ties
 from clearfast_gis.attitude.ties import LinearTie
+from clearfast_gis.pipeline.state import StageState
 from clearfast_gis.progress import Progress
 
 ADJUST_MIN_DEG = 0.01
@@ -14,12 +15,18 @@ ADJUST_MIN_DEG = 0.01
 more than this, degrees (0.01 deg moves the ground by 0.35 cm at 20 m range)."""
 
 
-UNIT = "attitude_adjustment"
+STAGE = "attitude_adjustment"
+"""The chain's stage (:mod:`clearfast_gis.pipeline.stages`) whose units these are."""
+
+REFINED = "refined"
+"""Part of the stage that records the refined adjustment (ties between neighbouring adjusted
+scans); the first adjustment is the stage's own unit."""
+
+UNIT = STAGE
 """Run-state unit of the adjustment."""
 
-
-REFINED_UNIT = "attitude_adjustment_refined"
-"""Run-state unit of the refined adjustment (ties between neighbouring adjusted scans)."""
+REFINED_UNIT = f"{STAGE}/{REFINED}"
+"""Run-state unit of the refined adjustment."""
 
 
 REFINE_MIN_SHARE = 0.25
@@ -57,7 +64,7 @@ def _finite_or_none(v: float) -> float | None:
     return float(v) if np.isfinite(v) else None
 
 
-def stored_model(state) -> tuple[np.ndarray, np.ndarray] | None:
+def stored_model(state: StageState) -> tuple[np.ndarray, np.ndarray] | None:
     """The adjusted attitude recorded in the run state (the refined one once it exists), if
     the adjustment ran.
 
@@ -65,7 +72,7 @@ def stored_model(state) -> tuple[np.ndarray, np.ndarray] | None:
     than :data:`ADJUST_MIN_DEG`) keep the first adjustment's placement; the refined model
     describes them to within that bound.
     """
-    unit = state.done(REFINED_UNIT) or state.done(UNIT)
+    unit = state.done(REFINED) or state.done()
     if unit is None:
         return None
     return np.array(unit["node_times_s"], dtype=float), np.array(unit["nodes_rpy_deg"],
@@ -117,9 +124,10 @@ def adjust_survey_attitude(job, state, order: list[int], scan_records: dict[int,
     Parameters
     ----------
     job : the pipeline's scan job (``frame_times``, ``build``, ``reference``)
-    state : RunState
-        Each adjustment is a unit of its own; re-projected scans are marked ``adjusted``
-        (1, or 2 after the refined adjustment) so an interrupted run resumes where it stopped.
+    state : StageState
+        The stage's run state: each adjustment is a unit of its own; re-projected scans are
+        marked ``adjusted`` (1, or 2 after the refined adjustment) so an interrupted run
+        resumes where it stopped.
     order : list of int
         Scans in time order.
     scan_records : dict
@@ -144,19 +152,19 @@ def adjust_survey_attitude(job, state, order: list[int], scan_records: dict[int,
     times = {s: survey.frames.time_s[survey.scan_rows(s, 0)] for s in order}
     node_times = np.array([scan_records[s]["time_s"] for s in order], dtype=float)
     prior = np.array([attitudes.get(s, (0.0, 0.0, 0.0)) for s in order], dtype=float)
-    unit = state.done(UNIT)
+    unit = state.done()
     if unit is None:
         ties = [LinearTie.from_list(v) for s in order
                 for v in (scan_records[s].get("ties") or [])]
         unit = _fit(ties, order, node_times, prior, times,
                     {s: placement_attitude(scan_records[s], None, times[s]) for s in order})
-        state.finish(UNIT, unit)
+        state.finish("", unit)
     _rebuild(job, unit, 1, scan_records, attitudes, progress)
     final = unit
     if refine is None:
-        refine = state.done(REFINED_UNIT) is not None \
+        refine = state.done(REFINED) is not None \
             or len(unit["rebuild"]) >= REFINE_MIN_SHARE * len(order)
-    refined = state.done(REFINED_UNIT) if refine else None
+    refined = state.done(REFINED) if refine else None
     if refine and refined is None:
         model = (node_times, np.array(unit["nodes_rpy_deg"], dtype=float))
         markers = [t for s in order for t in map(LinearTie.from_list,
@@ -167,7 +175,7 @@ def adjust_survey_attitude(job, state, order: list[int], scan_records: dict[int,
         refined = _fit(ties, order, node_times, prior, times,
                        {s: placement_attitude(scan_records[s], model, times[s])
                         for s in order})
-        state.finish(REFINED_UNIT, refined)
+        state.finish(REFINED, refined)
     if refined is not None:
         _rebuild(job, refined, 2, scan_records, attitudes, progress)
         final = refined

@@ -1,16 +1,31 @@
-"""The anomaly set of a survey: what the anomaly stage hands to the products."""
+"""The anomaly stages of the chain (detection, characterisation, products) and the anomaly
+set they hand to the products writers."""
 
 from __future__ import annotations
 
 import dataclasses
+import json
 import math
 from dataclasses import dataclass
+from pathlib import Path
 
 import numpy as np
 
 from clearfast_gis.detection.features import AnomalyFeatures
-from clearfast_gis.detection.markers import MarkerMatch
+from clearfast_gis.detection.likelihood import screen_and_rank
+from clearfast_gis.detection.markers import MarkerMatch, markers_in_mosaics, split_markers
+from clearfast_gis.detection.voting import detect_on_mosaics
+from clearfast_gis.export.cog import read_mosaic
+from clearfast_gis.export.manifest import read_products_manifest
+from clearfast_gis.export.records import suspect_records
+from clearfast_gis.parallel import thread_map
+from clearfast_gis.pipeline import stages
+from clearfast_gis.pipeline.products import write_anomaly_products
+from clearfast_gis.pipeline.scanjob import scan_part
+from clearfast_gis.pipeline.stages import Characterisation, Detection, RunContext
+from clearfast_gis.pipeline.state import StageState, mosaic_rel
 from clearfast_gis.thermal import Inversion
+from clearfast_gis.thermal.sitesoil import characterise, site_soil
 
 
 @dataclass
@@ -40,3 +55,102 @@ class AnomalySet:
     soil_alpha_sigma_m2s: float = math.nan
     notes: list[str] = dataclasses.field(default_factory=list)
     markers: list[MarkerMatch] = dataclasses.field(default_factory=list)
+
+
+def _load_stack(products: Path, scans: list[int]) -> tuple[np.ndarray, object]:
+    """The scans' mosaics as one float32 (N, B, H, W) array (filled as they are read, on
+    threads that decompress side by side, so that the stack is the only full copy in memory)
+    and the first mosaic's record."""
+    first = read_mosaic(products / mosaic_rel(scans[0]))
+    stack = np.empty((len(scans), *first.bands_c.shape), dtype=np.float32)
+    stack[0] = first.bands_c
+
+    def fill(k: int) -> None:
+        stack[k] = read_mosaic(products / mosaic_rel(scans[k])).bands_c
+
+    thread_map(fill, range(1, len(scans)))
+    return stack, first
+
+
+def _mosaics_digest(mosaics: StageState, scans: list[int]) -> str:
+    """Checksum of the scan mosaics the anomalies come from (their run-state checksums)."""
+    import hashlib
+
+    files = [mosaics.files(scan_part(s)) for s in scans]
+    return hashlib.sha256(json.dumps(files, sort_keys=True).encode()).hexdigest()[:20]
+
+
+def detect(c: RunContext) -> Detection:
+    """The ``detection`` stage: the detector on the stacked mosaics, known markers set apart;
+    or the products of an earlier run, when they are up to date."""
+    read, scan_records = c[stages.READ], c[stages.MOSAICS].scan_records
+    scans = sorted(scan_records)
+    digest = _mosaics_digest(c.stage_state(stages.MOSAICS), scans)
+    done = c.stage_state(stages.PRODUCTS).done()
+    if done is not None and done.get("mosaics") == digest \
+            and (c.products / "products.json").exists():
+        kept = read_products_manifest(c.products)
+        if kept.get("parameters") == c.options.as_dict():
+            c.progress.message("anomalies: up to date, kept")
+            return Detection(kept=kept)
+    o = c.options
+    times = np.array([scan_records[s]["time_s"] for s in scans])
+    lon = float(read.ctx.survey.manifest["site"]["longitude_deg"])
+    stack, first = _load_stack(c.products, scans)
+    labels, feats = detect_on_mosaics(stack, times, first.transform, read.grid.pixel_size, lon,
+                                      o.d1_m, o.d2_m, o.epsilon, o.level, o.gamma,
+                                      o.max_anomalies, level_fraction=o.level_fraction,
+                                      gamma_fraction=o.gamma_fraction, progress=c.progress)
+    ids, xy = list(read.marker_ids), read.marker_xy
+    feats, _ = split_markers(feats, ids, xy)
+    matches = markers_in_mosaics(stack, read.grid, ids, xy)
+    return Detection(None, labels, feats, matches, stack, times, first.transform, digest)
+
+
+def characterise_suspects(c: RunContext) -> Characterisation:
+    """The ``characterisation`` stage: the site's soil, then depth and diffusivity of every
+    suspect with the thermal model."""
+    from clearfast_gis.thermal import forcing_from_weather
+
+    det = c[stages.DETECTION]
+    if det.kept is not None:
+        return Characterisation()
+    if not c.options.invert:
+        return Characterisation(notes=("thermal characterisation switched off",))
+    if not det.features:
+        return Characterisation()
+    ctx, logs = c[stages.READ].ctx, c[stages.READ].report.logs
+    forcing = forcing_from_weather(ctx.weather)
+    outside = det.labels == 0
+    background = np.array([np.nanmedian(img[outside]) for img in det.stack[:, 0]])
+    soil, alpha, sigma = site_soil(logs.soil, forcing, det.times_s, background)
+    inversions = characterise(det.features, det.times_s, forcing, soil, progress=c.progress)
+    return Characterisation(inversions, alpha, sigma)
+
+
+def write_products(c: RunContext) -> dict:
+    """The ``products`` stage: suspect records, anomalies.gpkg, report.html; returns the
+    products manifest."""
+    from clearfast_gis.pipeline.inputs import fix_quality_summary
+
+    det, char = c[stages.DETECTION], c[stages.CHARACTERISATION]
+    if det.kept is not None:
+        return det.kept
+    read = c[stages.READ]
+    survey = read.ctx.survey
+    anomalies = AnomalySet(det.labels, det.features, char.inversions, char.soil_alpha_m2s,
+                           char.soil_alpha_sigma_m2s, list(char.notes), det.markers)
+    fixq = fix_quality_summary(read.ctx)
+    lon = float(survey.manifest["site"]["longitude_deg"])
+    records = screen_and_rank(suspect_records(anomalies, det.times_s, lon,
+                                              fixq["worst_during_frames"],
+                                              survey.manifest["survey_id"]),
+                              len(det.times_s))
+    timings = {k: v["wall_s"] for k, v in c.meter.stages.items()}
+    manifest = write_anomaly_products(c.products, read.ctx, survey, anomalies, records,
+                                      det.stack, det.times_s, det.transform, read.epsg,
+                                      c[stages.MOSAICS].scan_records, read.report, c.options,
+                                      fixq, timings)
+    c.stage_state(stages.PRODUCTS).finish("", {"n": len(records), "mosaics": det.mosaics_digest},
+                                          ["anomalies.gpkg", "report.html"])
+    return manifest

@@ -1,9 +1,11 @@
 """Checkpoints of a processing run: what is finished, so a re-run resumes.
 
 The state lives in ``PRODUCTS/.clearfast/state.json`` and is rewritten atomically after every
-finished unit of work (band offsets, a scan mosaic, the anomalies). A unit counts as finished
-only when its record matches the current inputs and parameters and its product files still
-have the recorded checksums.
+finished unit of work (band offsets, a scan mosaic, the anomalies). Units are named
+``STAGE`` or ``STAGE/PART`` after the stage of :mod:`clearfast_gis.pipeline.stages` that
+made them and carry that stage's key (the parameters it depends on, chained with the stages
+before it). A unit counts as finished only when the inputs are the same, its stage key is the
+current one and its product files still have the recorded checksums.
 
 Opening the state also
 
@@ -28,6 +30,21 @@ from clearfast_gis.errors import OutputError
 from clearfast_gis.export.manifest import sha256_file
 
 STATE_DIR = ".clearfast"
+"""Folder of the run state (and the scans' source maps) inside a products folder."""
+
+
+def mosaic_rel(scan: int) -> str:
+    """Relative path of a scan's mosaic in the products folder.
+
+    >>> mosaic_rel(7)
+    'mosaics/scan_007.tif'
+    """
+    return f"mosaics/scan_{scan:03d}.tif"
+
+
+def source_rel(scan: int) -> str:
+    """Relative path of a scan's source map (scan-pattern position seen in each cell)."""
+    return f"{STATE_DIR}/source_{scan:03d}.npy"
 
 
 def is_temporary(name: str) -> bool:
@@ -80,10 +97,12 @@ class RunState:
             if isinstance(stored, dict) and stored.get("key") == key:
                 self.units = stored.get("units", {})
 
-    def done(self, unit: str, files: list[str] | None = None) -> dict | None:
-        """The record of ``unit`` if finished and its files unchanged, else None."""
+    def done(self, unit: str, files: list[str] | None = None, key: str | None = None
+             ) -> dict | None:
+        """The record of ``unit`` if finished (with stage key ``key`` when given) and its
+        files unchanged, else None."""
         rec = self.units.get(unit)
-        if rec is None:
+        if rec is None or (key is not None and rec.get("stage_key") != key):
             return None
         for rel, digest in rec.get("files", {}).items():
             p = self.products / rel
@@ -93,23 +112,56 @@ class RunState:
             return None
         return rec
 
-    def finish(self, unit: str, record: dict, files: list[str] = ()) -> None:
-        """Record ``unit`` as finished with the checksums of its product ``files``."""
+    def finish(self, unit: str, record: dict, files: list[str] = (), key: str | None = None
+               ) -> None:
+        """Record ``unit`` as finished with the checksums of its product ``files`` (and the
+        stage key ``key``)."""
         rec = dict(record)
+        if key is not None:
+            rec["stage_key"] = key
         rec["files"] = {rel: sha256_file(self.products / rel) for rel in files}
         self.units[unit] = rec
         write_text(self.path, json.dumps({"key": self.key, "units": self.units}, indent=1,
                                          sort_keys=True))
 
-    def drop(self, prefix: str) -> None:
-        """Forget every unit whose name starts with ``prefix``."""
-        self.units = {k: v for k, v in self.units.items() if not k.startswith(prefix)}
+    def drop(self, stage: str) -> None:
+        """Forget every unit of ``stage`` (``stage`` and ``stage/...``)."""
+        self.units = {k: v for k, v in self.units.items()
+                      if k != stage and not k.startswith(stage + "/")}
 
     def close(self) -> None:
         """Release the products folder's lock (also released when the process ends)."""
         if self._lock is not None and not self._lock.closed:
             self._lock.close()
         _HELD.pop(os.path.abspath(self.products), None)
+
+
+    def stage(self, name: str, key: str) -> StageState:
+        """The units of stage ``name`` under its current key."""
+        return StageState(self, name, key)
+
+
+class StageState:
+    """One stage's view of the run state: unit names relative to the stage (``""`` is the
+    stage's own unit, ``"scan_003"`` is ``STAGE/scan_003``), every unit checked against and
+    recorded with the stage's key."""
+
+    def __init__(self, state: RunState, name: str, key: str) -> None:
+        self.state, self.name, self.key = state, name, key
+
+    def unit(self, part: str = "") -> str:
+        """Full unit name of ``part``."""
+        return f"{self.name}/{part}" if part else self.name
+
+    def done(self, part: str = "", files: list[str] | None = None) -> dict | None:
+        return self.state.done(self.unit(part), files, key=self.key)
+
+    def finish(self, part: str, record: dict, files: list[str] = ()) -> None:
+        self.state.finish(self.unit(part), record, files, key=self.key)
+
+    def files(self, part: str = "") -> dict:
+        """Checksums recorded for the unit's files (empty when unknown)."""
+        return self.state.units.get(self.unit(part), {}).get("files", {})
 
 
 _HELD: dict[str, object] = {}

@@ -233,12 +233,8 @@ def apparent_temperature_frames(
                                  (raw.shape[2], raw.shape[1]), interpolation=cv2.INTER_LINEAR)
         else:
             tau = 1.0
-        if kernels.reference():
-            out[k] = raw_to_apparent(raw[k], blend_gain_offsets(parts), tau, air.t_air_k[k],
-                                     table)
-        else:
-            tau_map = np.broadcast_to(np.asarray(tau, dtype=np.float32), raw.shape[1:])
-            apparent_frame(raw[k], parts, tau_map, float(b_air_all[k]), table, out[k])
+        kernels.kernel("apparent_frame")(raw[k], parts, tau, float(air.t_air_k[k]),
+                                         float(b_air_all[k]), table, out[k])
         progress.advance(1)
     return out
 
@@ -296,3 +292,20 @@ def apparent_temperature_scan(
         raw, times, b, table, events, air, path_length_m, mode, min_contrast_counts,
         atmosphere=has_transmittance_model(info.lambda_min_um, info.lambda_max_um),
         progress=progress)
+
+
+def _apparent_fused(raw: np.ndarray, parts: list, tau, t_air_k: float, b_air: float, table,
+                    out: np.ndarray) -> None:
+    """One frame's apparent temperature (kelvin) into ``out`` on the fast kernels:
+    calibration (``parts``: weighted gain/offset of the calibration events), atmosphere
+    (transmittance ``tau``, scalar or (H, W); air radiance ``b_air``) and inverse Planck fused
+    per pixel (:func:`clearfast_gis.radiometry.fused.apparent_frame`)."""
+    tau_map = np.broadcast_to(np.asarray(tau, dtype=np.float32), raw.shape)
+    apparent_frame(raw, parts, tau_map, b_air, table, out)
+
+
+def _apparent_reference(raw: np.ndarray, parts: list, tau, t_air_k: float, b_air: float,
+                        table, out: np.ndarray) -> None:
+    """The same on the reference kernels, step by step (:func:`raw_to_apparent`, air
+    temperature ``t_air_k``)."""
+    out[...] = raw_to_apparent(raw, blend_gain_offsets(parts), tau, t_air_k, table)

@@ -181,16 +181,7 @@ class BandTable:
             radiance outside the table's temperature range. With ``--kernels reference``:
             :func:`apparent_temperature_paper` (the paper's 0.1 K table and ``np.interp``).
         """
-        r = np.asarray(radiance)
-        if kernels.reference():
-            return apparent_temperature_paper(r, self).astype(dtype)
-        if r.dtype not in (np.float32, np.float64):
-            r = r.astype(np.float64)
-        flat = np.ascontiguousarray(r).ravel()
-        out = np.empty(flat.shape, dtype=dtype)
-        _uniform_linear(flat, self.inverse_radiance0, 1.0 / self.inverse_step,
-                        self.inverse_t_k, out)
-        return out.reshape(r.shape)
+        return kernels.kernel("inverse_planck")(self, np.asarray(radiance), dtype)
 
     def temperature_exact(self, radiance: ArrayLike) -> np.ndarray:
         """Apparent temperature by Newton iteration on the closed form (slow reference).
@@ -257,3 +248,19 @@ def apparent_temperature_paper(
     t_k, rad = paper_table(table, step_k)
     return np.interp(np.asarray(radiance, dtype=np.float64), rad, t_k,
                      left=np.nan, right=np.nan)
+
+
+def _temperature_uniform(table: BandTable, r: np.ndarray, dtype=np.float32) -> np.ndarray:
+    """:meth:`BandTable.temperature` on the fast kernels (radiance-uniform table, numba)."""
+    if r.dtype not in (np.float32, np.float64):
+        r = r.astype(np.float64)
+    flat = np.ascontiguousarray(r).ravel()
+    out = np.empty(flat.shape, dtype=dtype)
+    _uniform_linear(flat, table.inverse_radiance0, 1.0 / table.inverse_step,
+                    table.inverse_t_k, out)
+    return out.reshape(r.shape)
+
+
+def _temperature_paper(table: BandTable, r: np.ndarray, dtype=np.float32) -> np.ndarray:
+    """:meth:`BandTable.temperature` on the reference kernels (the paper's 0.1 K table)."""
+    return apparent_temperature_paper(r, table).astype(dtype)

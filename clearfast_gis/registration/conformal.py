@@ -298,9 +298,19 @@ def register_conformal(
     shift_bound = (float(max_shift_px) if max_shift_px is not None
                    else float(max(hf, wf) + max(m0.shape)))
 
-    if kernels.reference():
-        return _reference(f0, m0, base, init is None, scale, max_shift_px, shift_bound,
-                          max_angle_rad, bins, max_samples, smooth_px, min_overlap, min_metric)
+    return kernels.kernel("register_conformal")(
+        f0, m0, base, init is None, scale, max_shift_px, shift_bound, max_angle_rad, bins,
+        max_samples, smooth_px, min_overlap, min_metric, polish_samples)
+
+
+def _register_fast(f0: np.ndarray, m0: np.ndarray, base: ConformalTransform, search: bool,
+                   scale: bool, max_shift_px: float | None, shift_bound: float,
+                   max_angle_rad: float, bins: int, max_samples: int, smooth_px: float,
+                   min_overlap: float, min_metric: float, polish_samples: int
+                   ) -> ConformalTransform:
+    """:func:`register_conformal` on the fast kernels (Parzen Mattes MI, analytic gradient,
+    bounded L-BFGS over a pyramid) from the checked, masked images ``f0``, ``m0`` and the
+    start ``base``; ``search``: global search at the coarsest level (no ``init``)."""
     levels = min(n_levels_for(f0.shape), n_levels_for(m0.shape))
     fpyr = masked_pyramid(f0, levels)
     mpyr = masked_pyramid(m0, levels)
@@ -328,7 +338,7 @@ def register_conformal(
         bounds = _Bounds(base.scaled(factor), active, max_angle_rad,
                          shift_bound * factor, problem.radius_px)
         if level == levels - 1:
-            if init is None:
+            if search:
                 candidates = _global_candidates(fl, ml, base.scaled(factor), max_angle_rad,
                                                 None if max_shift_px is None
                                                 else shift_bound * factor,
@@ -373,9 +383,11 @@ def register_conformal(
 def _reference(f0: np.ndarray, m0: np.ndarray, base: ConformalTransform, search: bool,
                scale: bool, max_shift_px: float | None, shift_bound: float,
                max_angle_rad: float, bins: int, max_samples: int, smooth_px: float,
-               min_overlap: float, min_metric: float) -> ConformalTransform:
+               min_overlap: float, min_metric: float, polish_samples: int = 0
+               ) -> ConformalTransform:
     """:func:`register_conformal` by SimpleITK (``--kernels reference``), judged by the same
-    acceptance test (overlap, normalised MI at the finest level, bounds)."""
+    acceptance test (overlap, normalised MI at the finest level, bounds); SimpleITK has no
+    separate polish (``polish_samples`` is not used)."""
     from clearfast_gis.registration.reference import register_reference
 
     result, _ = register_reference(f0, m0, base, search, scale, max_shift_px,

@@ -1,32 +1,32 @@
 <!DOCTYPE qgis PUBLIC 'http://mrcc.com/qgis.dtd' 'SYSTEM'>
-<qgis hasScaleBasedVisibilityFlag="0" simplifyAlgorithm="0" simplifyLocal="1" simplifyMaxScale="1" minScale="100000000" labelsEnabled="0" symbologyReferenceScale="-1" version="3.22.16-Białowieża" simplifyDrawingTol="1" maxScale="0" styleCategories="Symbology|Labeling|Fields|Forms|MapTips|AttributeTable|Rendering" simplifyDrawingHints="1">
-  <renderer-v2 attr="polarity" enableorderby="0" forceraster="0" referencescale="-1" type="categorizedSymbol" symbollevels="0">
+<qgis hasScaleBasedVisibilityFlag="0" simplifyDrawingHints="1" symbologyReferenceScale="-1" styleCategories="Symbology|Labeling|Fields|Forms|MapTips|AttributeTable|Rendering" labelsEnabled="0" simplifyAlgorithm="0" simplifyLocal="1" maxScale="0" simplifyDrawingTol="1" minScale="100000000" simplifyMaxScale="1" version="3.22.16-Białowieża">
+  <renderer-v2 forceraster="0" attr="polarity" referencescale="-1" enableorderby="0" type="categorizedSymbol" symbollevels="0">
     <categories>
-      <category symbol="0" value="hot" label="Warm by day" render="true"/>
-      <category symbol="1" value="cold" label="Cool by day" render="true"/>
+      <category value="hot" symbol="0" label="Warm by day" render="true"/>
+      <category value="cold" symbol="1" label="Cool by day" render="true"/>
     </categories>
     <symbols>
-      <symbol alpha="1" clip_to_extent="1" type="fill" name="0" force_rhr="0">
+      <symbol name="0" clip_to_extent="1" force_rhr="0" type="fill" alpha="1">
         <data_defined_properties>
           <Option type="Map">
-            <Option value="" type="QString" name="name"/>
+            <Option value="" name="name" type="QString"/>
             <Option name="properties"/>
-            <Option value="collection" type="QString" name="type"/>
+            <Option value="collection" name="type" type="QString"/>
           </Option>
         </data_defined_properties>
-        <layer pass="0" locked="0" enabled="1" class="SimpleFill">
+        <layer enabled="1" class="SimpleFill" pass="0" locked="0">
           <Option type="Map">
-            <Option value="3x:0,0,0,0,0,0" type="QString" name="border_width_map_unit_scale"/>
-            <Option value="0,0,0,0" type="QString" name="color"/>
-            <Option value="bevel" type="QString" name="joinstyle"/>
-            <Option value="0,0" type="QString" name="offset"/>
-            <Option value="3x:0,0,0,0,0,0" type="QString" name="offset_map_unit_scale"/>
-            <Option value="MM" type="QString" name="offset_unit"/>
-            <Option value="215,48,39,255" type="QString" name="outline_color"/>
-            <Option value="solid" type="QString" name="outline_style"/>
-            <Option value="0.5" type="QString" name="outline_width"/>
-            <Option value="MM" type="QString" name="outline_width_unit"/>
-            <Option value="no" type="QString" name="style"/>
+            <Option value="3x:0,0,0,0,0,0" name="border_width_map_unit_scale" type="QString"/>
+            <Option value="0,0,0,0" name="color" type="QString"/>
+            <Option value="bevel" name="joinstyle" type="QString"/>
+            <Option value="0,0" name="offset" type="QString"/>
+            <Option value="3x:0,0,0,0,0,0" name="offset_map_unit_scale" type="QString"/>
+            <Option value="MM" name="offset_unit" type="QString"/>
+            <Option value="215,48,39,255" name="outline_color" type="QString"/>
+            <Option value="solid" name="outline_style" type="QString"/>
+            <Option value="0.5" name="outline_width" type="QString"/>
+            <Option value="MM" name="outline_width_unit" type="QString"/>
+            <Option value="no" name="style" type="QString"/>
           </Option>
           <prop v="3x:0,0,0,0,0,0" k="border_width_map_unit_scale"/>
           <prop v="0,0,0,0" k="color"/>
@@ -41,34 +41,34 @@
           <prop v="no" k="style"/>
           <data_defined_properties>
             <Option type="Map">
-              <Option value="" type="QString" name="name"/>
+              <Option value="" name="name" type="QString"/>
               <Option name="properties"/>
-              <Option value="collection" type="QString" name="type"/>
+              <Option value="collection" name="type" type="QString"/>
             </Option>
           </data_defined_properties>
         </layer>
       </symbol>
-      <symbol alpha="1" clip_to_extent="1" type="fill" name="1" force_rhr="0">
+      <symbol name="1" clip_to_extent="1" force_rhr="0" type="fill" alpha="1">
         <data_defined_properties>
           <Option type="Map">
-            <Option value="" type="QString" name="name"/>
+            <Option value="" name="name" type="QString"/>
             <Option name="properties"/>
-            <Option value="collection" type="QString" name="type"/>
+            <Option value="collection" name="type" type="QString"/>
           </Option>
         </data_defined_properties>
-        <layer pass="0" locked="0" enabled="1" class="SimpleFill">
+        <layer enabled="1" class="SimpleFill" pass="0" locked="0">
           <Option type="Map">
-            <Option value="3x:0,0,0,0,0,0" type="QString" name="border_width_map_unit_scale"/>
-            <Option value="0,0,0,0" type="QString" name="color"/>
-            <Option value="bevel" type="QString" name="joinstyle"/>
-            <Option value="0,0" type="QString" name="offset"/>
-            <Option value="3x:0,0,0,0,0,0" type="QString" name="offset_map_unit_scale"/>
-            <Option value="MM" type="QString" name="offset_unit"/>
-            <Option value="69,117,180,255" type="QString" name="outline_color"/>
-            <Option value="solid" type="QString" name="outline_style"/>
-            <Option value="0.5" type="QString" name="outline_width"/>
-            <Option value="MM" type="QString" name="outline_width_unit"/>
-            <Option value="no" type="QString" name="style"/>
+            <Option value="3x:0,0,0,0,0,0" name="border_width_map_unit_scale" type="QString"/>
+            <Option value="0,0,0,0" name="color" type="QString"/>
+            <Option value="bevel" name="joinstyle" type="QString"/>
+            <Option value="0,0" name="offset" type="QString"/>
+            <Option value="3x:0,0,0,0,0,0" name="offset_map_unit_scale" type="QString"/>
+            <Option value="MM" name="offset_unit" type="QString"/>
+            <Option value="69,117,180,255" name="outline_color" type="QString"/>
+            <Option value="solid" name="outline_style" type="QString"/>
+            <Option value="0.5" name="outline_width" type="QString"/>
+            <Option value="MM" name="outline_width_unit" type="QString"/>
+            <Option value="no" name="style" type="QString"/>
           </Option>
           <prop v="3x:0,0,0,0,0,0" k="border_width_map_unit_scale"/>
           <prop v="0,0,0,0" k="color"/>
@@ -83,9 +83,9 @@
           <prop v="no" k="style"/>
           <data_defined_properties>
             <Option type="Map">
-              <Option value="" type="QString" name="name"/>
+              <Option value="" name="name" type="QString"/>
               <Option name="properties"/>
-              <Option value="collection" type="QString" name="type"/>
+              <Option value="collection" name="type" type="QString"/>
             </Option>
           </data_defined_properties>
         </layer>
@@ -102,8 +102,8 @@
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option value="false" type="bool" name="IsMultiline"/>
-            <Option value="false" type="bool" name="UseHtml"/>
+            <Option value="false" name="IsMultiline" type="bool"/>
+            <Option value="false" name="UseHtml" type="bool"/>
           </Option>
         </config>
       </editWidget>
@@ -112,12 +112,12 @@
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option value="true" type="bool" name="AllowNull"/>
-            <Option value="1e+09" type="double" name="Max"/>
-            <Option value="-1e+09" type="double" name="Min"/>
-            <Option value="2" type="int" name="Precision"/>
-            <Option value="1" type="int" name="Step"/>
-            <Option value="SpinBox" type="QString" name="Style"/>
+            <Option value="true" name="AllowNull" type="bool"/>
+            <Option value="1e+09" name="Max" type="double"/>
+            <Option value="-1e+09" name="Min" type="double"/>
+            <Option value="2" name="Precision" type="int"/>
+            <Option value="1" name="Step" type="int"/>
+            <Option value="SpinBox" name="Style" type="QString"/>
           </Option>
         </config>
       </editWidget>
@@ -126,12 +126,12 @@
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option value="true" type="bool" name="AllowNull"/>
-            <Option value="1e+09" type="double" name="Max"/>
-            <Option value="-1e+09" type="double" name="Min"/>
-            <Option value="2" type="int" name="Precision"/>
-            <Option value="1" type="int" name="Step"/>
-            <Option value="SpinBox" type="QString" name="Style"/>
+            <Option value="true" name="AllowNull" type="bool"/>
+            <Option value="1e+09" name="Max" type="double"/>
+            <Option value="-1e+09" name="Min" type="double"/>
+            <Option value="2" name="Precision" type="int"/>
+            <Option value="1" name="Step" type="int"/>
+            <Option value="SpinBox" name="Style" type="QString"/>
           </Option>
         </config>
       </editWidget>
@@ -140,12 +140,12 @@
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option value="true" type="bool" name="AllowNull"/>
-            <Option value="1e+09" type="double" name="Max"/>
-            <Option value="-1e+09" type="double" name="Min"/>
-            <Option value="7" type="int" name="Precision"/>
-            <Option value="1" type="int" name="Step"/>
-            <Option value="SpinBox" type="QString" name="Style"/>
+            <Option value="true" name="AllowNull" type="bool"/>
+            <Option value="1e+09" name="Max" type="double"/>
+            <Option value="-1e+09" name="Min" type="double"/>
+            <Option value="7" name="Precision" type="int"/>
+            <Option value="1" name="Step" type="int"/>
+            <Option value="SpinBox" name="Style" type="QString"/>
           </Option>
         </config>
       </editWidget>
@@ -154,12 +154,12 @@
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option value="true" type="bool" name="AllowNull"/>
-            <Option value="1e+09" type="double" name="Max"/>
-            <Option value="-1e+09" type="double" name="Min"/>
-            <Option value="7" type="int" name="Precision"/>
-            <Option value="1" type="int" name="Step"/>
-            <Option value="SpinBox" type="QString" name="Style"/>
+            <Option value="true" name="AllowNull" type="bool"/>
+            <Option value="1e+09" name="Max" type="double"/>
+            <Option value="-1e+09" name="Min" type="double"/>
+            <Option value="7" name="Precision" type="int"/>
+            <Option value="1" name="Step" type="int"/>
+            <Option value="SpinBox" name="Style" type="QString"/>
           </Option>
         </config>
       </editWidget>
@@ -168,12 +168,12 @@
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option value="true" type="bool" name="AllowNull"/>
-            <Option value="1e+09" type="double" name="Max"/>
-            <Option value="-1e+09" type="double" name="Min"/>
-            <Option value="3" type="int" name="Precision"/>
-            <Option value="1" type="int" name="Step"/>
-            <Option value="SpinBox" type="QString" name="Style"/>
+            <Option value="true" name="AllowNull" type="bool"/>
+            <Option value="1e+09" name="Max" type="double"/>
+            <Option value="-1e+09" name="Min" type="double"/>
+            <Option value="3" name="Precision" type="int"/>
+            <Option value="1" name="Step" type="int"/>
+            <Option value="SpinBox" name="Style" type="QString"/>
           </Option>
         </config>
       </editWidget>
@@ -182,12 +182,12 @@
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option value="true" type="bool" name="AllowNull"/>
-            <Option value="1e+09" type="double" name="Max"/>
-            <Option value="-1e+09" type="double" name="Min"/>
-            <Option value="2" type="int" name="Precision"/>
-            <Option value="1" type="int" name="Step"/>
-            <Option value="SpinBox" type="QString" name="Style"/>
+            <Option value="true" name="AllowNull" type="bool"/>
+            <Option value="1e+09" name="Max" type="double"/>
+            <Option value="-1e+09" name="Min" type="double"/>
+            <Option value="2" name="Precision" type="int"/>
+            <Option value="1" name="Step" type="int"/>
+            <Option value="SpinBox" name="Style" type="QString"/>
           </Option>
         </config>
       </editWidget>
@@ -196,12 +196,12 @@
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option value="true" type="bool" name="AllowNull"/>
-            <Option value="1e+09" type="double" name="Max"/>
-            <Option value="-1e+09" type="double" name="Min"/>
-            <Option value="2" type="int" name="Precision"/>
-            <Option value="1" type="int" name="Step"/>
-            <Option value="SpinBox" type="QString" name="Style"/>
+            <Option value="true" name="AllowNull" type="bool"/>
+            <Option value="1e+09" name="Max" type="double"/>
+            <Option value="-1e+09" name="Min" type="double"/>
+            <Option value="2" name="Precision" type="int"/>
+            <Option value="1" name="Step" type="int"/>
+            <Option value="SpinBox" name="Style" type="QString"/>
           </Option>
         </config>
       </editWidget>
@@ -210,12 +210,12 @@
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option value="true" type="bool" name="AllowNull"/>
-            <Option value="1e+09" type="double" name="Max"/>
-            <Option value="-1e+09" type="double" name="Min"/>
-            <Option value="3" type="int" name="Precision"/>
-            <Option value="1" type="int" name="Step"/>
-            <Option value="SpinBox" type="QString" name="Style"/>
+            <Option value="true" name="AllowNull" type="bool"/>
+            <Option value="1e+09" name="Max" type="double"/>
+            <Option value="-1e+09" name="Min" type="double"/>
+            <Option value="3" name="Precision" type="int"/>
+            <Option value="1" name="Step" type="int"/>
+            <Option value="SpinBox" name="Style" type="QString"/>
           </Option>
         </config>
       </editWidget>
@@ -224,12 +224,12 @@
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option value="true" type="bool" name="AllowNull"/>
-            <Option value="1e+09" type="double" name="Max"/>
-            <Option value="-1e+09" type="double" name="Min"/>
-            <Option value="3" type="int" name="Precision"/>
-            <Option value="1" type="int" name="Step"/>
-            <Option value="SpinBox" type="QString" name="Style"/>
+            <Option value="true" name="AllowNull" type="bool"/>
+            <Option value="1e+09" name="Max" type="double"/>
+            <Option value="-1e+09" name="Min" type="double"/>
+            <Option value="3" name="Precision" type="int"/>
+            <Option value="1" name="Step" type="int"/>
+            <Option value="SpinBox" name="Style" type="QString"/>
           </Option>
         </config>
       </editWidget>
@@ -238,8 +238,8 @@
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option value="false" type="bool" name="IsMultiline"/>
-            <Option value="false" type="bool" name="UseHtml"/>
+            <Option value="false" name="IsMultiline" type="bool"/>
+            <Option value="false" name="UseHtml" type="bool"/>
           </Option>
         </config>
       </editWidget>
@@ -248,8 +248,8 @@
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option value="false" type="bool" name="IsMultiline"/>
-            <Option value="false" type="bool" name="UseHtml"/>
+            <Option value="false" name="IsMultiline" type="bool"/>
+            <Option value="false" name="UseHtml" type="bool"/>
           </Option>
         </config>
       </editWidget>
@@ -258,8 +258,8 @@
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option value="false" type="bool" name="IsMultiline"/>
-            <Option value="false" type="bool" name="UseHtml"/>
+            <Option value="false" name="IsMultiline" type="bool"/>
+            <Option value="false" name="UseHtml" type="bool"/>
           </Option>
         </config>
       </editWidget>
@@ -268,8 +268,8 @@
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option value="false" type="bool" name="IsMultiline"/>
-            <Option value="false" type="bool" name="UseHtml"/>
+            <Option value="false" name="IsMultiline" type="bool"/>
+            <Option value="false" name="UseHtml" type="bool"/>
           </Option>
         </config>
       </editWidget>
@@ -278,8 +278,8 @@
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option value="false" type="bool" name="IsMultiline"/>
-            <Option value="false" type="bool" name="UseHtml"/>
+            <Option value="false" name="IsMultiline" type="bool"/>
+            <Option value="false" name="UseHtml" type="bool"/>
           </Option>
         </config>
       </editWidget>
@@ -288,12 +288,12 @@
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option value="true" type="bool" name="AllowNull"/>
-            <Option value="1e+09" type="double" name="Max"/>
-            <Option value="-1e+09" type="double" name="Min"/>
-            <Option value="2" type="int" name="Precision"/>
-            <Option value="1" type="int" name="Step"/>
-            <Option value="SpinBox" type="QString" name="Style"/>
+            <Option value="true" name="AllowNull" type="bool"/>
+            <Option value="1e+09" name="Max" type="double"/>
+            <Option value="-1e+09" name="Min" type="double"/>
+            <Option value="2" name="Precision" type="int"/>
+            <Option value="1" name="Step" type="int"/>
+            <Option value="SpinBox" name="Style" type="QString"/>
           </Option>
         </config>
       </editWidget>
@@ -302,8 +302,8 @@
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option value="false" type="bool" name="IsMultiline"/>
-            <Option value="false" type="bool" name="UseHtml"/>
+            <Option value="false" name="IsMultiline" type="bool"/>
+            <Option value="false" name="UseHtml" type="bool"/>
           </Option>
         </config>
       </editWidget>
@@ -312,12 +312,12 @@
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option value="true" type="bool" name="AllowNull"/>
-            <Option value="1e+09" type="double" name="Max"/>
-            <Option value="-1e+09" type="double" name="Min"/>
-            <Option value="2" type="int" name="Precision"/>
-            <Option value="1" type="int" name="Step"/>
-            <Option value="SpinBox" type="QString" name="Style"/>
+            <Option value="true" name="AllowNull" type="bool"/>
+            <Option value="1e+09" name="Max" type="double"/>
+            <Option value="-1e+09" name="Min" type="double"/>
+            <Option value="2" name="Precision" type="int"/>
+            <Option value="1" name="Step" type="int"/>
+            <Option value="SpinBox" name="Style" type="QString"/>
           </Option>
         </config>
       </editWidget>
@@ -326,12 +326,12 @@
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option value="true" type="bool" name="AllowNull"/>
-            <Option value="1e+09" type="double" name="Max"/>
-            <Option value="-1e+09" type="double" name="Min"/>
-            <Option value="2" type="int" name="Precision"/>
-            <Option value="1" type="int" name="Step"/>
-            <Option value="SpinBox" type="QString" name="Style"/>
+            <Option value="true" name="AllowNull" type="bool"/>
+            <Option value="1e+09" name="Max" type="double"/>
+            <Option value="-1e+09" name="Min" type="double"/>
+            <Option value="2" name="Precision" type="int"/>
+            <Option value="1" name="Step" type="int"/>
+            <Option value="SpinBox" name="Style" type="QString"/>
           </Option>
         </config>
       </editWidget>
@@ -340,8 +340,8 @@
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option value="false" type="bool" name="IsMultiline"/>
-            <Option value="false" type="bool" name="UseHtml"/>
+            <Option value="false" name="IsMultiline" type="bool"/>
+            <Option value="false" name="UseHtml" type="bool"/>
           </Option>
         </config>
       </editWidget>
@@ -357,8 +357,8 @@
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option value="false" type="bool" name="IsMultiline"/>
-            <Option value="false" type="bool" name="UseHtml"/>
+            <Option value="false" name="IsMultiline" type="bool"/>
+            <Option value="false" name="UseHtml" type="bool"/>
           </Option>
         </config>
       </editWidget>
@@ -367,12 +367,12 @@
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option value="true" type="bool" name="AllowNull"/>
-            <Option value="1e+09" type="double" name="Max"/>
-            <Option value="-1e+09" type="double" name="Min"/>
-            <Option value="2" type="int" name="Precision"/>
-            <Option value="1" type="int" name="Step"/>
-            <Option value="SpinBox" type="QString" name="Style"/>
+            <Option value="true" name="AllowNull" type="bool"/>
+            <Option value="1e+09" name="Max" type="double"/>
+            <Option value="-1e+09" name="Min" type="double"/>
+            <Option value="2" name="Precision" type="int"/>
+            <Option value="1" name="Step" type="int"/>
+            <Option value="SpinBox" name="Style" type="QString"/>
           </Option>
         </config>
       </editWidget>
@@ -381,8 +381,8 @@
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option value="false" type="bool" name="IsMultiline"/>
-            <Option value="false" type="bool" name="UseHtml"/>
+            <Option value="false" name="IsMultiline" type="bool"/>
+            <Option value="false" name="UseHtml" type="bool"/>
           </Option>
         </config>
       </editWidget>
@@ -391,12 +391,12 @@
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option value="true" type="bool" name="AllowNull"/>
-            <Option value="1e+09" type="double" name="Max"/>
-            <Option value="-1e+09" type="double" name="Min"/>
-            <Option value="2" type="int" name="Precision"/>
-            <Option value="1" type="int" name="Step"/>
-            <Option value="SpinBox" type="QString" name="Style"/>
+            <Option value="true" name="AllowNull" type="bool"/>
+            <Option value="1e+09" name="Max" type="double"/>
+            <Option value="-1e+09" name="Min" type="double"/>
+            <Option value="2" name="Precision" type="int"/>
+            <Option value="1" name="Step" type="int"/>
+            <Option value="SpinBox" name="Style" type="QString"/>
           </Option>
         </config>
       </editWidget>
@@ -405,8 +405,8 @@
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option value="false" type="bool" name="IsMultiline"/>
-            <Option value="false" type="bool" name="UseHtml"/>
+            <Option value="false" name="IsMultiline" type="bool"/>
+            <Option value="false" name="UseHtml" type="bool"/>
           </Option>
         </config>
       </editWidget>
@@ -415,8 +415,8 @@
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option value="false" type="bool" name="IsMultiline"/>
-            <Option value="false" type="bool" name="UseHtml"/>
+            <Option value="false" name="IsMultiline" type="bool"/>
+            <Option value="false" name="UseHtml" type="bool"/>
           </Option>
         </config>
       </editWidget>
@@ -425,8 +425,8 @@
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option value="false" type="bool" name="IsMultiline"/>
-            <Option value="false" type="bool" name="UseHtml"/>
+            <Option value="false" name="IsMultiline" type="bool"/>
+            <Option value="false" name="UseHtml" type="bool"/>
           </Option>
         </config>
       </editWidget>
@@ -435,8 +435,8 @@
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option value="false" type="bool" name="IsMultiline"/>
-            <Option value="false" type="bool" name="UseHtml"/>
+            <Option value="false" name="IsMultiline" type="bool"/>
+            <Option value="false" name="UseHtml" type="bool"/>
           </Option>
         </config>
       </editWidget>
@@ -445,8 +445,8 @@
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option value="false" type="bool" name="IsMultiline"/>
-            <Option value="false" type="bool" name="UseHtml"/>
+            <Option value="false" name="IsMultiline" type="bool"/>
+            <Option value="false" name="UseHtml" type="bool"/>
           </Option>
         </config>
       </editWidget>
@@ -455,171 +455,176 @@
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option value="false" type="bool" name="IsMultiline"/>
-            <Option value="false" type="bool" name="UseHtml"/>
+            <Option value="false" name="IsMultiline" type="bool"/>
+            <Option value="false" name="UseHtml" type="bool"/>
           </Option>
         </config>
       </editWidget>
     </field>
   </fieldConfiguration>
   <aliases>
-    <alias index="0" field="anomaly_id" name="Suspect id"/>
-    <alias index="1" field="x" name="Easting (m, survey UTM)"/>
-    <alias index="2" field="y" name="Northing (m, survey UTM)"/>
-    <alias index="3" field="lat" name="Latitude (°, WGS84)"/>
-    <alias index="4" field="lon" name="Longitude (°, WGS84)"/>
-    <alias index="5" field="area_m2" name="Area (m²)"/>
-    <alias index="6" field="diameter_m" name="Diameter (m)"/>
-    <alias index="7" field="circularity" name="Circularity (0-1)"/>
-    <alias index="8" field="depth_m" name="Burial depth (m)"/>
-    <alias index="9" field="depth_sigma_m" name="Depth uncertainty, 1σ (m)"/>
-    <alias index="10" field="diffusivity_m2s" name="Thermal diffusivity (m²/s)"/>
-    <alias index="11" field="diffusivity_sigma_m2s" name="Diffusivity uncertainty, 1σ (m²/s)"/>
-    <alias index="12" field="status" name="Characterisation status"/>
-    <alias index="13" field="polarity" name="Polarity"/>
-    <alias index="14" field="class_cue" name="Class cue"/>
-    <alias index="15" field="confidence" name="Class cue confidence (0-1)"/>
-    <alias index="16" field="n_scans" name="Scans seen"/>
-    <alias index="17" field="contrast_day_k" name="Day contrast (K)"/>
-    <alias index="18" field="contrast_night_k" name="Night contrast (K)"/>
-    <alias index="19" field="fix_quality" name="GNSS fix quality"/>
-    <alias index="20" field="figure" name="Contrast curve"/>
-    <alias index="21" field="contrast_series" name="Contrast series (JSON)"/>
-    <alias index="22" field="p_mine" name="Mine likelihood (0-1)"/>
-    <alias index="23" field="priority" name="Priority (1 = first)"/>
-    <alias index="24" field="cue_confidence" name="Class cue confidence (0-1)"/>
-    <alias index="25" field="set_aside_reason" name="Set aside because"/>
-    <alias index="26" field="short_id" name="Short id"/>
-    <alias index="27" field="depth" name="Burial depth ± 1σ"/>
-    <alias index="28" field="diffusivity" name="Thermal diffusivity ± 1σ"/>
-    <alias index="29" field="likelihood" name="Mine likelihood"/>
-    <alias index="30" field="cue_confidence_pct" name="Class cue confidence"/>
+    <alias field="anomaly_id" name="Suspect id" index="0"/>
+    <alias field="x" name="Easting (m, survey UTM)" index="1"/>
+    <alias field="y" name="Northing (m, survey UTM)" index="2"/>
+    <alias field="lat" name="Latitude (°, WGS84)" index="3"/>
+    <alias field="lon" name="Longitude (°, WGS84)" index="4"/>
+    <alias field="area_m2" name="Area (m²)" index="5"/>
+    <alias field="diameter_m" name="Diameter (m)" index="6"/>
+    <alias field="circularity" name="Circularity (0-1)" index="7"/>
+    <alias field="depth_m" name="Burial depth (m)" index="8"/>
+    <alias field="depth_sigma_m" name="Depth uncertainty, 1σ (m)" index="9"/>
+    <alias field="diffusivity_m2s" name="Thermal diffusivity (m²/s)" index="10"/>
+    <alias field="diffusivity_sigma_m2s" name="Diffusivity uncertainty, 1σ (m²/s)" index="11"/>
+    <alias field="status" name="Characterisation status" index="12"/>
+    <alias field="polarity" name="Polarity" index="13"/>
+    <alias field="class_cue" name="Class cue" index="14"/>
+    <alias field="confidence" name="Class cue confidence (0-1)" index="15"/>
+    <alias field="n_scans" name="Scans seen" index="16"/>
+    <alias field="contrast_day_k" name="Day contrast (K)" index="17"/>
+    <alias field="contrast_night_k" name="Night contrast (K)" index="18"/>
+    <alias field="fix_quality" name="GNSS fix quality" index="19"/>
+    <alias field="figure" name="Contrast curve" index="20"/>
+    <alias field="contrast_series" name="Contrast series (JSON)" index="21"/>
+    <alias field="p_mine" name="Mine likelihood (0-1)" index="22"/>
+    <alias field="priority" name="Priority (1 = first)" index="23"/>
+    <alias field="cue_confidence" name="Class cue confidence (0-1)" index="24"/>
+    <alias field="set_aside_reason" name="Set aside because" index="25"/>
+    <alias field="short_id" name="Short id" index="26"/>
+    <alias field="depth" name="Burial depth ± 1σ" index="27"/>
+    <alias field="diffusivity" name="Thermal diffusivity ± 1σ" index="28"/>
+    <alias field="likelihood" name="Mine likelihood" index="29"/>
+    <alias field="cue_confidence_pct" name="Class cue confidence" index="30"/>
   </aliases>
   <defaults>
-    <default field="anomaly_id" expression="" applyOnUpdate="0"/>
-    <default field="x" expression="" applyOnUpdate="0"/>
-    <default field="y" expression="" applyOnUpdate="0"/>
-    <default field="lat" expression="" applyOnUpdate="0"/>
-    <default field="lon" expression="" applyOnUpdate="0"/>
-    <default field="area_m2" expression="" applyOnUpdate="0"/>
-    <default field="diameter_m" expression="" applyOnUpdate="0"/>
-    <default field="circularity" expression="" applyOnUpdate="0"/>
-    <default field="depth_m" expression="" applyOnUpdate="0"/>
-    <default field="depth_sigma_m" expression="" applyOnUpdate="0"/>
-    <default field="diffusivity_m2s" expression="" applyOnUpdate="0"/>
-    <default field="diffusivity_sigma_m2s" expression="" applyOnUpdate="0"/>
-    <default field="status" expression="" applyOnUpdate="0"/>
-    <default field="polarity" expression="" applyOnUpdate="0"/>
-    <default field="class_cue" expression="" applyOnUpdate="0"/>
-    <default field="confidence" expression="" applyOnUpdate="0"/>
-    <default field="n_scans" expression="" applyOnUpdate="0"/>
-    <default field="contrast_day_k" expression="" applyOnUpdate="0"/>
-    <default field="contrast_night_k" expression="" applyOnUpdate="0"/>
-    <default field="fix_quality" expression="" applyOnUpdate="0"/>
-    <default field="figure" expression="" applyOnUpdate="0"/>
-    <default field="contrast_series" expression="" applyOnUpdate="0"/>
-    <default field="p_mine" expression="" applyOnUpdate="0"/>
-    <default field="priority" expression="" applyOnUpdate="0"/>
-    <default field="cue_confidence" expression="" applyOnUpdate="0"/>
-    <default field="set_aside_reason" expression="" applyOnUpdate="0"/>
-    <default field="short_id" expression="" applyOnUpdate="0"/>
-    <default field="depth" expression="" applyOnUpdate="0"/>
-    <default field="diffusivity" expression="" applyOnUpdate="0"/>
-    <default field="likelihood" expression="" applyOnUpdate="0"/>
-    <default field="cue_confidence_pct" expression="" applyOnUpdate="0"/>
+    <default applyOnUpdate="0" field="anomaly_id" expression=""/>
+    <default applyOnUpdate="0" field="x" expression=""/>
+    <default applyOnUpdate="0" field="y" expression=""/>
+    <default applyOnUpdate="0" field="lat" expression=""/>
+    <default applyOnUpdate="0" field="lon" expression=""/>
+    <default applyOnUpdate="0" field="area_m2" expression=""/>
+    <default applyOnUpdate="0" field="diameter_m" expression=""/>
+    <default applyOnUpdate="0" field="circularity" expression=""/>
+    <default applyOnUpdate="0" field="depth_m" expression=""/>
+    <default applyOnUpdate="0" field="depth_sigma_m" expression=""/>
+    <default applyOnUpdate="0" field="diffusivity_m2s" expression=""/>
+    <default applyOnUpdate="0" field="diffusivity_sigma_m2s" expression=""/>
+    <default applyOnUpdate="0" field="status" expression=""/>
+    <default applyOnUpdate="0" field="polarity" expression=""/>
+    <default applyOnUpdate="0" field="class_cue" expression=""/>
+    <default applyOnUpdate="0" field="confidence" expression=""/>
+    <default applyOnUpdate="0" field="n_scans" expression=""/>
+    <default applyOnUpdate="0" field="contrast_day_k" expression=""/>
+    <default applyOnUpdate="0" field="contrast_night_k" expression=""/>
+    <default applyOnUpdate="0" field="fix_quality" expression=""/>
+    <default applyOnUpdate="0" field="figure" expression=""/>
+    <default applyOnUpdate="0" field="contrast_series" expression=""/>
+    <default applyOnUpdate="0" field="p_mine" expression=""/>
+    <default applyOnUpdate="0" field="priority" expression=""/>
+    <default applyOnUpdate="0" field="cue_confidence" expression=""/>
+    <default applyOnUpdate="0" field="set_aside_reason" expression=""/>
+    <default applyOnUpdate="0" field="short_id" expression=""/>
+    <default applyOnUpdate="0" field="depth" expression=""/>
+    <default applyOnUpdate="0" field="diffusivity" expression=""/>
+    <default applyOnUpdate="0" field="likelihood" expression=""/>
+    <default applyOnUpdate="0" field="cue_confidence_pct" expression=""/>
   </defaults>
   <constraints>
-    <constraint constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0" field="anomaly_id"/>
-    <constraint constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0" field="x"/>
-    <constraint constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0" field="y"/>
-    <constraint constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0" field="lat"/>
-    <constraint constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0" field="lon"/>
-    <constraint constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0" field="area_m2"/>
-    <constraint constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0" field="diameter_m"/>
-    <constraint constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0" field="circularity"/>
-    <constraint constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0" field="depth_m"/>
-    <constraint constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0" field="depth_sigma_m"/>
-    <constraint constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0" field="diffusivity_m2s"/>
-    <constraint constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0" field="diffusivity_sigma_m2s"/>
-    <constraint constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0" field="status"/>
-    <constraint constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0" field="polarity"/>
-    <constraint constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0" field="class_cue"/>
-    <constraint constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0" field="confidence"/>
-    <constraint constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0" field="n_scans"/>
-    <constraint constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0" field="contrast_day_k"/>
-    <constraint constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0" field="contrast_night_k"/>
-    <constraint constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0" field="fix_quality"/>
-    <constraint constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0" field="figure"/>
-    <constraint constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0" field="contrast_series"/>
-    <constraint constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0" field="p_mine"/>
-    <constraint constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0" field="priority"/>
-    <constraint constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0" field="cue_confidence"/>
-    <constraint constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0" field="set_aside_reason"/>
-    <constraint constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0" field="short_id"/>
-    <constraint constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0" field="depth"/>
-    <constraint constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0" field="diffusivity"/>
-    <constraint constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0" field="likelihood"/>
-    <constraint constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0" field="cue_confidence_pct"/>
+    <constraint unique_strength="0" field="anomaly_id" constraints="0" notnull_strength="0" exp_strength="0"/>
+    <constraint unique_strength="0" field="x" constraints="0" notnull_strength="0" exp_strength="0"/>
+    <constraint unique_strength="0" field="y" constraints="0" notnull_strength="0" exp_strength="0"/>
+    <constraint unique_strength="0" field="lat" constraints="0" notnull_strength="0" exp_strength="0"/>
+    <constraint unique_strength="0" field="lon" constraints="0" notnull_strength="0" exp_strength="0"/>
+    <constraint unique_strength="0" field="area_m2" constraints="0" notnull_strength="0" exp_strength="0"/>
+    <constraint unique_strength="0" field="diameter_m" constraints="0" notnull_strength="0" exp_strength="0"/>
+    <constraint unique_strength="0" field="circularity" constraints="0" notnull_strength="0" exp_strength="0"/>
+    <constraint unique_strength="0" field="depth_m" constraints="0" notnull_strength="0" exp_strength="0"/>
+    <constraint unique_strength="0" field="depth_sigma_m" constraints="0" notnull_strength="0" exp_strength="0"/>
+    <constraint unique_strength="0" field="diffusivity_m2s" constraints="0" notnull_strength="0" exp_strength="0"/>
+    <constraint unique_strength="0" field="diffusivity_sigma_m2s" constraints="0" notnull_strength="0" exp_strength="0"/>
+    <constraint unique_strength="0" field="status" constraints="0" notnull_strength="0" exp_strength="0"/>
+    <constraint unique_strength="0" field="polarity" constraints="0" notnull_strength="0" exp_strength="0"/>
+    <constraint unique_strength="0" field="class_cue" constraints="0" notnull_strength="0" exp_strength="0"/>
+    <constraint unique_strength="0" field="confidence" constraints="0" notnull_strength="0" exp_strength="0"/>
+    <constraint unique_strength="0" field="n_scans" constraints="0" notnull_strength="0" exp_strength="0"/>
+    <constraint unique_strength="0" field="contrast_day_k" constraints="0" notnull_strength="0" exp_strength="0"/>
+    <constraint unique_strength="0" field="contrast_night_k" constraints="0" notnull_strength="0" exp_strength="0"/>
+    <constraint unique_strength="0" field="fix_quality" constraints="0" notnull_strength="0" exp_strength="0"/>
+    <constraint unique_strength="0" field="figure" constraints="0" notnull_strength="0" exp_strength="0"/>
+    <constraint unique_strength="0" field="contrast_series" constraints="0" notnull_strength="0" exp_strength="0"/>
+    <constraint unique_strength="0" field="p_mine" constraints="0" notnull_strength="0" exp_strength="0"/>
+    <constraint unique_strength="0" field="priority" constraints="0" notnull_strength="0" exp_strength="0"/>
+    <constraint unique_strength="0" field="cue_confidence" constraints="0" notnull_strength="0" exp_strength="0"/>
+    <constraint unique_strength="0" field="set_aside_reason" constraints="0" notnull_strength="0" exp_strength="0"/>
+    <constraint unique_strength="0" field="short_id" constraints="0" notnull_strength="0" exp_strength="0"/>
+    <constraint unique_strength="0" field="depth" constraints="0" notnull_strength="0" exp_strength="0"/>
+    <constraint unique_strength="0" field="diffusivity" constraints="0" notnull_strength="0" exp_strength="0"/>
+    <constraint unique_strength="0" field="likelihood" constraints="0" notnull_strength="0" exp_strength="0"/>
+    <constraint unique_strength="0" field="cue_confidence_pct" constraints="0" notnull_strength="0" exp_strength="0"/>
   </constraints>
   <constraintExpressions>
-    <constraint desc="" field="anomaly_id" exp=""/>
-    <constraint desc="" field="x" exp=""/>
-    <constraint desc="" field="y" exp=""/>
-    <constraint desc="" field="lat" exp=""/>
-    <constraint desc="" field="lon" exp=""/>
-    <constraint desc="" field="area_m2" exp=""/>
-    <constraint desc="" field="diameter_m" exp=""/>
-    <constraint desc="" field="circularity" exp=""/>
-    <constraint desc="" field="depth_m" exp=""/>
-    <constraint desc="" field="depth_sigma_m" exp=""/>
-    <constraint desc="" field="diffusivity_m2s" exp=""/>
-    <constraint desc="" field="diffusivity_sigma_m2s" exp=""/>
-    <constraint desc="" field="status" exp=""/>
-    <constraint desc="" field="polarity" exp=""/>
-    <constraint desc="" field="class_cue" exp=""/>
-    <constraint desc="" field="confidence" exp=""/>
-    <constraint desc="" field="n_scans" exp=""/>
-    <constraint desc="" field="contrast_day_k" exp=""/>
-    <constraint desc="" field="contrast_night_k" exp=""/>
-    <constraint desc="" field="fix_quality" exp=""/>
-    <constraint desc="" field="figure" exp=""/>
-    <constraint desc="" field="contrast_series" exp=""/>
-    <constraint desc="" field="p_mine" exp=""/>
-    <constraint desc="" field="priority" exp=""/>
-    <constraint desc="" field="cue_confidence" exp=""/>
-    <constraint desc="" field="set_aside_reason" exp=""/>
-    <constraint desc="" field="short_id" exp=""/>
-    <constraint desc="" field="depth" exp=""/>
-    <constraint desc="" field="diffusivity" exp=""/>
-    <constraint desc="" field="likelihood" exp=""/>
-    <constraint desc="" field="cue_confidence_pct" exp=""/>
+    <constraint exp="" desc="" field="anomaly_id"/>
+    <constraint exp="" desc="" field="x"/>
+    <constraint exp="" desc="" field="y"/>
+    <constraint exp="" desc="" field="lat"/>
+    <constraint exp="" desc="" field="lon"/>
+    <constraint exp="" desc="" field="area_m2"/>
+    <constraint exp="" desc="" field="diameter_m"/>
+    <constraint exp="" desc="" field="circularity"/>
+    <constraint exp="" desc="" field="depth_m"/>
+    <constraint exp="" desc="" field="depth_sigma_m"/>
+    <constraint exp="" desc="" field="diffusivity_m2s"/>
+    <constraint exp="" desc="" field="diffusivity_sigma_m2s"/>
+    <constraint exp="" desc="" field="status"/>
+    <constraint exp="" desc="" field="polarity"/>
+    <constraint exp="" desc="" field="class_cue"/>
+    <constraint exp="" desc="" field="confidence"/>
+    <constraint exp="" desc="" field="n_scans"/>
+    <constraint exp="" desc="" field="contrast_day_k"/>
+    <constraint exp="" desc="" field="contrast_night_k"/>
+    <constraint exp="" desc="" field="fix_quality"/>
+    <constraint exp="" desc="" field="figure"/>
+    <constraint exp="" desc="" field="contrast_series"/>
+    <constraint exp="" desc="" field="p_mine"/>
+    <constraint exp="" desc="" field="priority"/>
+    <constraint exp="" desc="" field="cue_confidence"/>
+    <constraint exp="" desc="" field="set_aside_reason"/>
+    <constraint exp="" desc="" field="short_id"/>
+    <constraint exp="" desc="" field="depth"/>
+    <constraint exp="" desc="" field="diffusivity"/>
+    <constraint exp="" desc="" field="likelihood"/>
+    <constraint exp="" desc="" field="cue_confidence_pct"/>
   </constraintExpressions>
   <expressionfields>
-    <field typeName="" expression="'S-' || lpad(to_string(to_int(regexp_substr(&quot;anomaly_id&quot;, '(\\d+)$'))), 3, '0')" subType="0" name="short_id" length="0" type="10" precision="0" comment=""/>
-    <field typeName="" expression="CASE WHEN &quot;depth_m&quot; * 100 IS NULL THEN 'not characterised' WHEN &quot;depth_sigma_m&quot; * 100 IS NULL THEN format_number(&quot;depth_m&quot; * 100, 1) || ' cm' ELSE format_number(&quot;depth_m&quot; * 100, 1) || ' ± ' || format_number(&quot;depth_sigma_m&quot; * 100, 1) || ' cm' END" subType="0" name="depth" length="0" type="10" precision="0" comment=""/>
-    <field typeName="" expression="CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 IS NULL THEN 'not characterised' WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 IS NULL THEN CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' mm²/s' ELSE CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' ± ' || CASE WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_sigma_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6))))) END || ' mm²/s' END" subType="0" name="diffusivity" length="0" type="10" precision="0" comment=""/>
-    <field typeName="" expression="CASE WHEN attribute('p_mine') IS NULL THEN 'not estimated' ELSE format_number(100 * attribute('p_mine'), 0) || ' %' END" subType="0" name="likelihood" length="0" type="10" precision="0" comment=""/>
-    <field typeName="" expression="CASE WHEN coalesce(attribute('cue_confidence'), attribute('confidence')) IS NULL THEN NULL ELSE format_number(100 * coalesce(attribute('cue_confidence'), attribute('confidence')), 0) || ' %' END" subType="0" name="cue_confidence_pct" length="0" type="10" precision="0" comment=""/>
-    <field typeName="" expression="'S-' || lpad(to_string(to_int(regexp_substr(&quot;anomaly_id&quot;, '(\\d+)$'))), 3, '0')" subType="0" name="short_id" length="0" type="10" precision="0" comment=""/>
-    <field typeName="" expression="CASE WHEN &quot;depth_m&quot; * 100 IS NULL THEN 'not characterised' WHEN &quot;depth_sigma_m&quot; * 100 IS NULL THEN format_number(&quot;depth_m&quot; * 100, 1) || ' cm' ELSE format_number(&quot;depth_m&quot; * 100, 1) || ' ± ' || format_number(&quot;depth_sigma_m&quot; * 100, 1) || ' cm' END" subType="0" name="depth" length="0" type="10" precision="0" comment=""/>
-    <field typeName="" expression="CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 IS NULL THEN 'not characterised' WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 IS NULL THEN CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' mm²/s' ELSE CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' ± ' || CASE WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_sigma_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6))))) END || ' mm²/s' END" subType="0" name="diffusivity" length="0" type="10" precision="0" comment=""/>
-    <field typeName="" expression="CASE WHEN attribute('p_mine') IS NULL THEN 'not estimated' ELSE format_number(100 * attribute('p_mine'), 0) || ' %' END" subType="0" name="likelihood" length="0" type="10" precision="0" comment=""/>
-    <field typeName="" expression="CASE WHEN coalesce(attribute('cue_confidence'), attribute('confidence')) IS NULL THEN NULL ELSE format_number(100 * coalesce(attribute('cue_confidence'), attribute('confidence')), 0) || ' %' END" subType="0" name="cue_confidence_pct" length="0" type="10" precision="0" comment=""/>
+    <field comment="" typeName="" name="short_id" precision="0" expression="'S-' || lpad(to_string(to_int(regexp_substr(&quot;anomaly_id&quot;, '(\\d+)$'))), 3, '0')" subType="0" type="10" length="0"/>
+    <field comment="" typeName="" name="depth" precision="0" expression="CASE WHEN &quot;depth_m&quot; * 100 IS NULL THEN 'not characterised' WHEN &quot;depth_sigma_m&quot; * 100 IS NULL THEN format_number(&quot;depth_m&quot; * 100, 1) || ' cm' ELSE format_number(&quot;depth_m&quot; * 100, 1) || ' ± ' || format_number(&quot;depth_sigma_m&quot; * 100, 1) || ' cm' END" subType="0" type="10" length="0"/>
+    <field comment="" typeName="" name="diffusivity" precision="0" expression="CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 IS NULL THEN 'not characterised' WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 IS NULL THEN CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' mm²/s' ELSE CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' ± ' || CASE WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_sigma_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6))))) END || ' mm²/s' END" subType="0" type="10" length="0"/>
+    <field comment="" typeName="" name="likelihood" precision="0" expression="CASE WHEN attribute('p_mine') IS NULL THEN 'not estimated' ELSE format_number(100 * attribute('p_mine'), 0) || ' %' END" subType="0" type="10" length="0"/>
+    <field comment="" typeName="" name="cue_confidence_pct" precision="0" expression="CASE WHEN coalesce(attribute('cue_confidence'), attribute('confidence')) IS NULL THEN NULL ELSE format_number(100 * coalesce(attribute('cue_confidence'), attribute('confidence')), 0) || ' %' END" subType="0" type="10" length="0"/>
+    <field comment="" typeName="" name="short_id" precision="0" expression="'S-' || lpad(to_string(to_int(regexp_substr(&quot;anomaly_id&quot;, '(\\d+)$'))), 3, '0')" subType="0" type="10" length="0"/>
+    <field comment="" typeName="" name="depth" precision="0" expression="CASE WHEN &quot;depth_m&quot; * 100 IS NULL THEN 'not characterised' WHEN &quot;depth_sigma_m&quot; * 100 IS NULL THEN format_number(&quot;depth_m&quot; * 100, 1) || ' cm' ELSE format_number(&quot;depth_m&quot; * 100, 1) || ' ± ' || format_number(&quot;depth_sigma_m&quot; * 100, 1) || ' cm' END" subType="0" type="10" length="0"/>
+    <field comment="" typeName="" name="diffusivity" precision="0" expression="CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 IS NULL THEN 'not characterised' WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 IS NULL THEN CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' mm²/s' ELSE CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' ± ' || CASE WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_sigma_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6))))) END || ' mm²/s' END" subType="0" type="10" length="0"/>
+    <field comment="" typeName="" name="likelihood" precision="0" expression="CASE WHEN attribute('p_mine') IS NULL THEN 'not estimated' ELSE format_number(100 * attribute('p_mine'), 0) || ' %' END" subType="0" type="10" length="0"/>
+    <field comment="" typeName="" name="cue_confidence_pct" precision="0" expression="CASE WHEN coalesce(attribute('cue_confidence'), attribute('confidence')) IS NULL THEN NULL ELSE format_number(100 * coalesce(attribute('cue_confidence'), attribute('confidence')), 0) || ' %' END" subType="0" type="10" length="0"/>
+    <field comment="" typeName="" name="short_id" precision="0" expression="'S-' || lpad(to_string(to_int(regexp_substr(&quot;anomaly_id&quot;, '(\\d+)$'))), 3, '0')" subType="0" type="10" length="0"/>
+    <field comment="" typeName="" name="depth" precision="0" expression="CASE WHEN &quot;depth_m&quot; * 100 IS NULL THEN 'not characterised' WHEN &quot;depth_sigma_m&quot; * 100 IS NULL THEN format_number(&quot;depth_m&quot; * 100, 1) || ' cm' ELSE format_number(&quot;depth_m&quot; * 100, 1) || ' ± ' || format_number(&quot;depth_sigma_m&quot; * 100, 1) || ' cm' END" subType="0" type="10" length="0"/>
+    <field comment="" typeName="" name="diffusivity" precision="0" expression="CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 IS NULL THEN 'not characterised' WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 IS NULL THEN CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' mm²/s' ELSE CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' ± ' || CASE WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_sigma_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6))))) END || ' mm²/s' END" subType="0" type="10" length="0"/>
+    <field comment="" typeName="" name="likelihood" precision="0" expression="CASE WHEN attribute('p_mine') IS NULL THEN 'not estimated' ELSE format_number(100 * attribute('p_mine'), 0) || ' %' END" subType="0" type="10" length="0"/>
+    <field comment="" typeName="" name="cue_confidence_pct" precision="0" expression="CASE WHEN coalesce(attribute('cue_confidence'), attribute('confidence')) IS NULL THEN NULL ELSE format_number(100 * coalesce(attribute('cue_confidence'), attribute('confidence')), 0) || ' %' END" subType="0" type="10" length="0"/>
   </expressionfields>
-  <attributetableconfig actionWidgetStyle="dropDown" sortExpression="coalesce(attribute('priority'), 1000000 * (CASE WHEN &quot;class_cue&quot; = 'at_mine' THEN 0 WHEN &quot;class_cue&quot; = 'ap_mine' THEN 1 WHEN &quot;class_cue&quot; = 'unknown' THEN 2 ELSE 3 END) - round(1000 * max(abs(&quot;contrast_day_k&quot;), abs(&quot;contrast_night_k&quot;))))" sortOrder="0">
+  <attributetableconfig sortOrder="0" sortExpression="coalesce(attribute('priority'), 1000000 * (CASE WHEN &quot;class_cue&quot; = 'at_mine' THEN 0 WHEN &quot;class_cue&quot; = 'ap_mine' THEN 1 WHEN &quot;class_cue&quot; = 'unknown' THEN 2 ELSE 3 END) - round(1000 * max(abs(&quot;contrast_day_k&quot;), abs(&quot;contrast_night_k&quot;))))" actionWidgetStyle="dropDown">
     <columns>
-      <column width="-1" hidden="0" type="field" name="anomaly_id"/>
-      <column width="-1" hidden="0" type="field" name="polarity"/>
-      <column width="-1" hidden="0" type="field" name="area_m2"/>
-      <column width="-1" hidden="0" type="field" name="p_mine"/>
-      <column width="-1" hidden="0" type="field" name="priority"/>
-      <column width="-1" hidden="0" type="field" name="cue_confidence"/>
-      <column width="-1" hidden="0" type="field" name="set_aside_reason"/>
-      <column width="-1" hidden="0" type="field" name="short_id"/>
-      <column width="-1" hidden="0" type="field" name="depth"/>
-      <column width="-1" hidden="0" type="field" name="diffusivity"/>
-      <column width="-1" hidden="0" type="field" name="likelihood"/>
-      <column width="-1" hidden="0" type="field" name="cue_confidence_pct"/>
+      <column width="-1" hidden="0" name="anomaly_id" type="field"/>
+      <column width="-1" hidden="0" name="polarity" type="field"/>
+      <column width="-1" hidden="0" name="area_m2" type="field"/>
+      <column width="-1" hidden="0" name="p_mine" type="field"/>
+      <column width="-1" hidden="0" name="priority" type="field"/>
+      <column width="-1" hidden="0" name="cue_confidence" type="field"/>
+      <column width="-1" hidden="0" name="set_aside_reason" type="field"/>
+      <column width="-1" hidden="0" name="short_id" type="field"/>
+      <column width="-1" hidden="0" name="depth" type="field"/>
+      <column width="-1" hidden="0" name="diffusivity" type="field"/>
+      <column width="-1" hidden="0" name="likelihood" type="field"/>
+      <column width="-1" hidden="0" name="cue_confidence_pct" type="field"/>
       <column width="-1" hidden="1" type="actions"/>
     </columns>
   </attributetableconfig>
@@ -636,57 +641,57 @@
   <featformsuppress>0</featformsuppress>
   <editorlayout>tablayout</editorlayout>
   <attributeEditorForm>
-    <attributeEditorContainer showLabel="1" visibilityExpressionEnabled="0" name="Suspect" groupBox="0" columnCount="1" visibilityExpression="">
-      <attributeEditorContainer showLabel="1" visibilityExpressionEnabled="0" name="Identification" groupBox="1" columnCount="1" visibilityExpression="">
-        <attributeEditorField showLabel="1" index="26" name="short_id"/>
-        <attributeEditorField showLabel="1" index="0" name="anomaly_id"/>
-        <attributeEditorField showLabel="1" index="23" name="priority"/>
-        <attributeEditorField showLabel="1" index="14" name="class_cue"/>
-        <attributeEditorField showLabel="1" index="29" name="likelihood"/>
-        <attributeEditorField showLabel="1" index="30" name="cue_confidence_pct"/>
-        <attributeEditorField showLabel="1" index="12" name="status"/>
-        <attributeEditorField showLabel="1" index="13" name="polarity"/>
-        <attributeEditorField showLabel="1" index="25" name="set_aside_reason"/>
+    <attributeEditorContainer name="Suspect" visibilityExpression="" groupBox="0" columnCount="1" showLabel="1" visibilityExpressionEnabled="0">
+      <attributeEditorContainer name="Identification" visibilityExpression="" groupBox="1" columnCount="1" showLabel="1" visibilityExpressionEnabled="0">
+        <attributeEditorField name="short_id" index="26" showLabel="1"/>
+        <attributeEditorField name="anomaly_id" index="0" showLabel="1"/>
+        <attributeEditorField name="priority" index="23" showLabel="1"/>
+        <attributeEditorField name="class_cue" index="14" showLabel="1"/>
+        <attributeEditorField name="likelihood" index="29" showLabel="1"/>
+        <attributeEditorField name="cue_confidence_pct" index="30" showLabel="1"/>
+        <attributeEditorField name="status" index="12" showLabel="1"/>
+        <attributeEditorField name="polarity" index="13" showLabel="1"/>
+        <attributeEditorField name="set_aside_reason" index="25" showLabel="1"/>
       </attributeEditorContainer>
-      <attributeEditorContainer showLabel="1" visibilityExpressionEnabled="0" name="Burial depth and soil" groupBox="1" columnCount="1" visibilityExpression="">
-        <attributeEditorField showLabel="1" index="27" name="depth"/>
-        <attributeEditorField showLabel="1" index="28" name="diffusivity"/>
+      <attributeEditorContainer name="Burial depth and soil" visibilityExpression="" groupBox="1" columnCount="1" showLabel="1" visibilityExpressionEnabled="0">
+        <attributeEditorField name="depth" index="27" showLabel="1"/>
+        <attributeEditorField name="diffusivity" index="28" showLabel="1"/>
       </attributeEditorContainer>
-      <attributeEditorContainer showLabel="1" visibilityExpressionEnabled="0" name="Thermal contrast" groupBox="1" columnCount="1" visibilityExpression="">
-        <attributeEditorField showLabel="1" index="17" name="contrast_day_k"/>
-        <attributeEditorField showLabel="1" index="18" name="contrast_night_k"/>
-        <attributeEditorField showLabel="1" index="16" name="n_scans"/>
+      <attributeEditorContainer name="Thermal contrast" visibilityExpression="" groupBox="1" columnCount="1" showLabel="1" visibilityExpressionEnabled="0">
+        <attributeEditorField name="contrast_day_k" index="17" showLabel="1"/>
+        <attributeEditorField name="contrast_night_k" index="18" showLabel="1"/>
+        <attributeEditorField name="n_scans" index="16" showLabel="1"/>
       </attributeEditorContainer>
-      <attributeEditorContainer showLabel="1" visibilityExpressionEnabled="0" name="Shape" groupBox="1" columnCount="1" visibilityExpression="">
-        <attributeEditorField showLabel="1" index="6" name="diameter_m"/>
-        <attributeEditorField showLabel="1" index="5" name="area_m2"/>
-        <attributeEditorField showLabel="1" index="7" name="circularity"/>
-      </attributeEditorContainer>
-    </attributeEditorContainer>
-    <attributeEditorContainer showLabel="1" visibilityExpressionEnabled="0" name="Contrast curve" groupBox="0" columnCount="1" visibilityExpression="">
-      <attributeEditorContainer showLabel="1" visibilityExpressionEnabled="0" name="Contrast curve" groupBox="1" columnCount="1" visibilityExpression="">
-        <attributeEditorField showLabel="1" index="20" name="figure"/>
+      <attributeEditorContainer name="Shape" visibilityExpression="" groupBox="1" columnCount="1" showLabel="1" visibilityExpressionEnabled="0">
+        <attributeEditorField name="diameter_m" index="6" showLabel="1"/>
+        <attributeEditorField name="area_m2" index="5" showLabel="1"/>
+        <attributeEditorField name="circularity" index="7" showLabel="1"/>
       </attributeEditorContainer>
     </attributeEditorContainer>
-    <attributeEditorContainer showLabel="1" visibilityExpressionEnabled="0" name="Position" groupBox="0" columnCount="1" visibilityExpression="">
-      <attributeEditorContainer showLabel="1" visibilityExpressionEnabled="0" name="Position" groupBox="1" columnCount="1" visibilityExpression="">
-        <attributeEditorField showLabel="1" index="1" name="x"/>
-        <attributeEditorField showLabel="1" index="2" name="y"/>
-        <attributeEditorField showLabel="1" index="3" name="lat"/>
-        <attributeEditorField showLabel="1" index="4" name="lon"/>
-        <attributeEditorField showLabel="1" index="19" name="fix_quality"/>
+    <attributeEditorContainer name="Contrast curve" visibilityExpression="" groupBox="0" columnCount="1" showLabel="1" visibilityExpressionEnabled="0">
+      <attributeEditorContainer name="Contrast curve" visibilityExpression="" groupBox="1" columnCount="1" showLabel="1" visibilityExpressionEnabled="0">
+        <attributeEditorField name="figure" index="20" showLabel="1"/>
       </attributeEditorContainer>
     </attributeEditorContainer>
-    <attributeEditorContainer showLabel="1" visibilityExpressionEnabled="0" name="Stored values" groupBox="0" columnCount="1" visibilityExpression="">
-      <attributeEditorContainer showLabel="1" visibilityExpressionEnabled="0" name="Stored values" groupBox="1" columnCount="1" visibilityExpression="">
-        <attributeEditorField showLabel="1" index="8" name="depth_m"/>
-        <attributeEditorField showLabel="1" index="9" name="depth_sigma_m"/>
-        <attributeEditorField showLabel="1" index="10" name="diffusivity_m2s"/>
-        <attributeEditorField showLabel="1" index="11" name="diffusivity_sigma_m2s"/>
-        <attributeEditorField showLabel="1" index="22" name="p_mine"/>
-        <attributeEditorField showLabel="1" index="24" name="cue_confidence"/>
-        <attributeEditorField showLabel="1" index="15" name="confidence"/>
-        <attributeEditorField showLabel="1" index="21" name="contrast_series"/>
+    <attributeEditorContainer name="Position" visibilityExpression="" groupBox="0" columnCount="1" showLabel="1" visibilityExpressionEnabled="0">
+      <attributeEditorContainer name="Position" visibilityExpression="" groupBox="1" columnCount="1" showLabel="1" visibilityExpressionEnabled="0">
+        <attributeEditorField name="x" index="1" showLabel="1"/>
+        <attributeEditorField name="y" index="2" showLabel="1"/>
+        <attributeEditorField name="lat" index="3" showLabel="1"/>
+        <attributeEditorField name="lon" index="4" showLabel="1"/>
+        <attributeEditorField name="fix_quality" index="19" showLabel="1"/>
+      </attributeEditorContainer>
+    </attributeEditorContainer>
+    <attributeEditorContainer name="Stored values" visibilityExpression="" groupBox="0" columnCount="1" showLabel="1" visibilityExpressionEnabled="0">
+      <attributeEditorContainer name="Stored values" visibilityExpression="" groupBox="1" columnCount="1" showLabel="1" visibilityExpressionEnabled="0">
+        <attributeEditorField name="depth_m" index="8" showLabel="1"/>
+        <attributeEditorField name="depth_sigma_m" index="9" showLabel="1"/>
+        <attributeEditorField name="diffusivity_m2s" index="10" showLabel="1"/>
+        <attributeEditorField name="diffusivity_sigma_m2s" index="11" showLabel="1"/>
+        <attributeEditorField name="p_mine" index="22" showLabel="1"/>
+        <attributeEditorField name="cue_confidence" index="24" showLabel="1"/>
+        <attributeEditorField name="confidence" index="15" showLabel="1"/>
+        <attributeEditorField name="contrast_series" index="21" showLabel="1"/>
       </attributeEditorContainer>
     </attributeEditorContainer>
   </attributeEditorForm>

@@ -1,42 +1,43 @@
 <!DOCTYPE qgis PUBLIC 'http://mrcc.com/qgis.dtd' 'SYSTEM'>
-<qgis hasScaleBasedVisibilityFlag="0" simplifyAlgorithm="0" simplifyLocal="1" simplifyMaxScale="1" minScale="100000000" labelsEnabled="1" symbologyReferenceScale="-1" version="3.22.16-Białowieża" simplifyDrawingTol="1" maxScale="0" styleCategories="Symbology|Labeling|Fields|Forms|MapTips|AttributeTable|Rendering" simplifyDrawingHints="1">
-  <renderer-v2 enableorderby="1" forceraster="0" referencescale="-1" type="RuleRenderer" symbollevels="0">
-    <rules key="{6f6a7dc0-85e7-4c05-a9a2-f6210ce1354e}">
-      <rule filter="&quot;class_cue&quot; = 'at_mine'" symbol="0" label="AT mine indication" key="{296b3d59-2756-42ef-86ce-ce3839fcd1e8}"/>
-      <rule filter="&quot;class_cue&quot; = 'ap_mine'" symbol="1" label="AP mine indication" key="{22272fa9-6f99-4721-9eb0-3b23dbecb00f}"/>
-      <rule filter="&quot;class_cue&quot; NOT IN ('at_mine', 'ap_mine', 'clutter') OR &quot;class_cue&quot; IS NULL" symbol="2" label="Other suspect" key="{a651a646-c531-49ab-a1e8-a70f74b4271f}"/>
-      <rule filter="&quot;class_cue&quot; = 'clutter'" symbol="3" label="Clutter" checkstate="0" key="{07c4cf9f-195d-4f7c-9e06-e821c694746b}"/>
+<qgis hasScaleBasedVisibilityFlag="0" simplifyDrawingHints="1" symbologyReferenceScale="-1" styleCategories="Symbology|Labeling|Fields|Forms|MapTips|AttributeTable|Rendering" labelsEnabled="1" simplifyAlgorithm="0" simplifyLocal="1" maxScale="0" simplifyDrawingTol="1" minScale="100000000" simplifyMaxScale="1" version="3.22.16-Białowieża">
+  <renderer-v2 forceraster="0" referencescale="-1" enableorderby="1" type="RuleRenderer" symbollevels="0">
+    <rules key="{69e580b9-d693-4599-82e6-2203206bf003}">
+      <rule symbol="0" label="AT mine indication" key="{0213b680-b6b8-4c48-afde-ae1f5305d8da}" filter="(coalesce(attribute('p_mine') >= 0.5, &quot;class_cue&quot; IN ('at_mine', 'ap_mine'))) AND &quot;class_cue&quot; = 'at_mine'"/>
+      <rule symbol="1" label="AP mine indication" key="{c39cd325-0560-4586-94c1-a2702888e562}" filter="(coalesce(attribute('p_mine') >= 0.5, &quot;class_cue&quot; IN ('at_mine', 'ap_mine'))) AND &quot;class_cue&quot; = 'ap_mine'"/>
+      <rule symbol="2" label="Mine indication, other cue" key="{01b27fc9-0813-458a-bbaf-c0eaa3c1d4ed}" filter="(coalesce(attribute('p_mine') >= 0.5, &quot;class_cue&quot; IN ('at_mine', 'ap_mine'))) AND coalesce(&quot;class_cue&quot; NOT IN ('at_mine', 'ap_mine'), true)"/>
+      <rule symbol="3" label="Other suspect" key="{86aa74d4-bb88-4b6f-b8e5-8e3c5323a21c}" filter="NOT (coalesce(attribute('p_mine') >= 0.5, &quot;class_cue&quot; IN ('at_mine', 'ap_mine'))) AND coalesce(&quot;class_cue&quot; &lt;> 'clutter', true)"/>
+      <rule symbol="4" label="Clutter" checkstate="0" key="{35fc9b1e-aadc-419f-8fef-1c88b653c3b5}" filter="NOT (coalesce(attribute('p_mine') >= 0.5, &quot;class_cue&quot; IN ('at_mine', 'ap_mine'))) AND &quot;class_cue&quot; = 'clutter'"/>
     </rules>
     <symbols>
-      <symbol alpha="1" clip_to_extent="1" type="marker" name="0" force_rhr="0">
+      <symbol name="0" clip_to_extent="1" force_rhr="0" type="marker" alpha="1">
         <data_defined_properties>
           <Option type="Map">
-            <Option value="" type="QString" name="name"/>
+            <Option value="" name="name" type="QString"/>
             <Option name="properties"/>
-            <Option value="collection" type="QString" name="type"/>
+            <Option value="collection" name="type" type="QString"/>
           </Option>
         </data_defined_properties>
-        <layer pass="0" locked="0" enabled="1" class="SimpleMarker">
+        <layer enabled="1" class="SimpleMarker" pass="0" locked="0">
           <Option type="Map">
-            <Option value="0" type="QString" name="angle"/>
-            <Option value="square" type="QString" name="cap_style"/>
-            <Option value="227,26,28,255" type="QString" name="color"/>
-            <Option value="1" type="QString" name="horizontal_anchor_point"/>
-            <Option value="bevel" type="QString" name="joinstyle"/>
-            <Option value="triangle" type="QString" name="name"/>
-            <Option value="0,0" type="QString" name="offset"/>
-            <Option value="3x:0,0,0,0,0,0" type="QString" name="offset_map_unit_scale"/>
-            <Option value="MM" type="QString" name="offset_unit"/>
-            <Option value="35,35,35,255" type="QString" name="outline_color"/>
-            <Option value="solid" type="QString" name="outline_style"/>
-            <Option value="0.3" type="QString" name="outline_width"/>
-            <Option value="3x:0,0,0,0,0,0" type="QString" name="outline_width_map_unit_scale"/>
-            <Option value="MM" type="QString" name="outline_width_unit"/>
-            <Option value="diameter" type="QString" name="scale_method"/>
-            <Option value="5" type="QString" name="size"/>
-            <Option value="3x:0,0,0,0,0,0" type="QString" name="size_map_unit_scale"/>
-            <Option value="MM" type="QString" name="size_unit"/>
-            <Option value="1" type="QString" name="vertical_anchor_point"/>
+            <Option value="0" name="angle" type="QString"/>
+            <Option value="square" name="cap_style" type="QString"/>
+            <Option value="227,26,28,255" name="color" type="QString"/>
+            <Option value="1" name="horizontal_anchor_point" type="QString"/>
+            <Option value="bevel" name="joinstyle" type="QString"/>
+            <Option value="triangle" name="name" type="QString"/>
+            <Option value="0,0" name="offset" type="QString"/>
+            <Option value="3x:0,0,0,0,0,0" name="offset_map_unit_scale" type="QString"/>
+            <Option value="MM" name="offset_unit" type="QString"/>
+            <Option value="35,35,35,255" name="outline_color" type="QString"/>
+            <Option value="solid" name="outline_style" type="QString"/>
+            <Option value="0.3" name="outline_width" type="QString"/>
+            <Option value="3x:0,0,0,0,0,0" name="outline_width_map_unit_scale" type="QString"/>
+            <Option value="MM" name="outline_width_unit" type="QString"/>
+            <Option value="diameter" name="scale_method" type="QString"/>
+            <Option value="5" name="size" type="QString"/>
+            <Option value="3x:0,0,0,0,0,0" name="size_map_unit_scale" type="QString"/>
+            <Option value="MM" name="size_unit" type="QString"/>
+            <Option value="1" name="vertical_anchor_point" type="QString"/>
           </Option>
           <prop v="0" k="angle"/>
           <prop v="square" k="cap_style"/>
@@ -59,42 +60,42 @@
           <prop v="1" k="vertical_anchor_point"/>
           <data_defined_properties>
             <Option type="Map">
-              <Option value="" type="QString" name="name"/>
+              <Option value="" name="name" type="QString"/>
               <Option name="properties"/>
-              <Option value="collection" type="QString" name="type"/>
+              <Option value="collection" name="type" type="QString"/>
             </Option>
           </data_defined_properties>
         </layer>
       </symbol>
-      <symbol alpha="1" clip_to_extent="1" type="marker" name="1" force_rhr="0">
+      <symbol name="1" clip_to_extent="1" force_rhr="0" type="marker" alpha="1">
         <data_defined_properties>
           <Option type="Map">
-            <Option value="" type="QString" name="name"/>
+            <Option value="" name="name" type="QString"/>
             <Option name="properties"/>
-            <Option value="collection" type="QString" name="type"/>
+            <Option value="collection" name="type" type="QString"/>
           </Option>
         </data_defined_properties>
-        <layer pass="0" locked="0" enabled="1" class="SimpleMarker">
+        <layer enabled="1" class="SimpleMarker" pass="0" locked="0">
           <Option type="Map">
-            <Option value="0" type="QString" name="angle"/>
-            <Option value="square" type="QString" name="cap_style"/>
-            <Option value="227,26,28,255" type="QString" name="color"/>
-            <Option value="1" type="QString" name="horizontal_anchor_point"/>
-            <Option value="bevel" type="QString" name="joinstyle"/>
-            <Option value="triangle" type="QString" name="name"/>
-            <Option value="0,0" type="QString" name="offset"/>
-            <Option value="3x:0,0,0,0,0,0" type="QString" name="offset_map_unit_scale"/>
-            <Option value="MM" type="QString" name="offset_unit"/>
-            <Option value="35,35,35,255" type="QString" name="outline_color"/>
-            <Option value="solid" type="QString" name="outline_style"/>
-            <Option value="0.3" type="QString" name="outline_width"/>
-            <Option value="3x:0,0,0,0,0,0" type="QString" name="outline_width_map_unit_scale"/>
-            <Option value="MM" type="QString" name="outline_width_unit"/>
-            <Option value="diameter" type="QString" name="scale_method"/>
-            <Option value="4" type="QString" name="size"/>
-            <Option value="3x:0,0,0,0,0,0" type="QString" name="size_map_unit_scale"/>
-            <Option value="MM" type="QString" name="size_unit"/>
-            <Option value="1" type="QString" name="vertical_anchor_point"/>
+            <Option value="0" name="angle" type="QString"/>
+            <Option value="square" name="cap_style" type="QString"/>
+            <Option value="227,26,28,255" name="color" type="QString"/>
+            <Option value="1" name="horizontal_anchor_point" type="QString"/>
+            <Option value="bevel" name="joinstyle" type="QString"/>
+            <Option value="triangle" name="name" type="QString"/>
+            <Option value="0,0" name="offset" type="QString"/>
+            <Option value="3x:0,0,0,0,0,0" name="offset_map_unit_scale" type="QString"/>
+            <Option value="MM" name="offset_unit" type="QString"/>
+            <Option value="35,35,35,255" name="outline_color" type="QString"/>
+            <Option value="solid" name="outline_style" type="QString"/>
+            <Option value="0.3" name="outline_width" type="QString"/>
+            <Option value="3x:0,0,0,0,0,0" name="outline_width_map_unit_scale" type="QString"/>
+            <Option value="MM" name="outline_width_unit" type="QString"/>
+            <Option value="diameter" name="scale_method" type="QString"/>
+            <Option value="4" name="size" type="QString"/>
+            <Option value="3x:0,0,0,0,0,0" name="size_map_unit_scale" type="QString"/>
+            <Option value="MM" name="size_unit" type="QString"/>
+            <Option value="1" name="vertical_anchor_point" type="QString"/>
           </Option>
           <prop v="0" k="angle"/>
           <prop v="square" k="cap_style"/>
@@ -117,42 +118,100 @@
           <prop v="1" k="vertical_anchor_point"/>
           <data_defined_properties>
             <Option type="Map">
-              <Option value="" type="QString" name="name"/>
+              <Option value="" name="name" type="QString"/>
               <Option name="properties"/>
-              <Option value="collection" type="QString" name="type"/>
+              <Option value="collection" name="type" type="QString"/>
             </Option>
           </data_defined_properties>
         </layer>
       </symbol>
-      <symbol alpha="0.6" clip_to_extent="1" type="marker" name="2" force_rhr="0">
+      <symbol name="2" clip_to_extent="1" force_rhr="0" type="marker" alpha="1">
         <data_defined_properties>
           <Option type="Map">
-            <Option value="" type="QString" name="name"/>
+            <Option value="" name="name" type="QString"/>
             <Option name="properties"/>
-            <Option value="collection" type="QString" name="type"/>
+            <Option value="collection" name="type" type="QString"/>
           </Option>
         </data_defined_properties>
-        <layer pass="0" locked="0" enabled="1" class="SimpleMarker">
+        <layer enabled="1" class="SimpleMarker" pass="0" locked="0">
           <Option type="Map">
-            <Option value="0" type="QString" name="angle"/>
-            <Option value="square" type="QString" name="cap_style"/>
-            <Option value="255,127,0,255" type="QString" name="color"/>
-            <Option value="1" type="QString" name="horizontal_anchor_point"/>
-            <Option value="bevel" type="QString" name="joinstyle"/>
-            <Option value="circle" type="QString" name="name"/>
-            <Option value="0,0" type="QString" name="offset"/>
-            <Option value="3x:0,0,0,0,0,0" type="QString" name="offset_map_unit_scale"/>
-            <Option value="MM" type="QString" name="offset_unit"/>
-            <Option value="90,90,90,255" type="QString" name="outline_color"/>
-            <Option value="solid" type="QString" name="outline_style"/>
-            <Option value="0.3" type="QString" name="outline_width"/>
-            <Option value="3x:0,0,0,0,0,0" type="QString" name="outline_width_map_unit_scale"/>
-            <Option value="MM" type="QString" name="outline_width_unit"/>
-            <Option value="diameter" type="QString" name="scale_method"/>
-            <Option value="2.4" type="QString" name="size"/>
-            <Option value="3x:0,0,0,0,0,0" type="QString" name="size_map_unit_scale"/>
-            <Option value="MM" type="QString" name="size_unit"/>
-            <Option value="1" type="QString" name="vertical_anchor_point"/>
+            <Option value="0" name="angle" type="QString"/>
+            <Option value="square" name="cap_style" type="QString"/>
+            <Option value="227,26,28,255" name="color" type="QString"/>
+            <Option value="1" name="horizontal_anchor_point" type="QString"/>
+            <Option value="bevel" name="joinstyle" type="QString"/>
+            <Option value="circle" name="name" type="QString"/>
+            <Option value="0,0" name="offset" type="QString"/>
+            <Option value="3x:0,0,0,0,0,0" name="offset_map_unit_scale" type="QString"/>
+            <Option value="MM" name="offset_unit" type="QString"/>
+            <Option value="35,35,35,255" name="outline_color" type="QString"/>
+            <Option value="solid" name="outline_style" type="QString"/>
+            <Option value="0.3" name="outline_width" type="QString"/>
+            <Option value="3x:0,0,0,0,0,0" name="outline_width_map_unit_scale" type="QString"/>
+            <Option value="MM" name="outline_width_unit" type="QString"/>
+            <Option value="diameter" name="scale_method" type="QString"/>
+            <Option value="3.2" name="size" type="QString"/>
+            <Option value="3x:0,0,0,0,0,0" name="size_map_unit_scale" type="QString"/>
+            <Option value="MM" name="size_unit" type="QString"/>
+            <Option value="1" name="vertical_anchor_point" type="QString"/>
+          </Option>
+          <prop v="0" k="angle"/>
+          <prop v="square" k="cap_style"/>
+          <prop v="227,26,28,255" k="color"/>
+          <prop v="1" k="horizontal_anchor_point"/>
+          <prop v="bevel" k="joinstyle"/>
+          <prop v="circle" k="name"/>
+          <prop v="0,0" k="offset"/>
+          <prop v="3x:0,0,0,0,0,0" k="offset_map_unit_scale"/>
+          <prop v="MM" k="offset_unit"/>
+          <prop v="35,35,35,255" k="outline_color"/>
+          <prop v="solid" k="outline_style"/>
+          <prop v="0.3" k="outline_width"/>
+          <prop v="3x:0,0,0,0,0,0" k="outline_width_map_unit_scale"/>
+          <prop v="MM" k="outline_width_unit"/>
+          <prop v="diameter" k="scale_method"/>
+          <prop v="3.2" k="size"/>
+          <prop v="3x:0,0,0,0,0,0" k="size_map_unit_scale"/>
+          <prop v="MM" k="size_unit"/>
+          <prop v="1" k="vertical_anchor_point"/>
+          <data_defined_properties>
+            <Option type="Map">
+              <Option value="" name="name" type="QString"/>
+              <Option name="properties"/>
+              <Option value="collection" name="type" type="QString"/>
+            </Option>
+          </data_defined_properties>
+        </layer>
+      </symbol>
+      <symbol name="3" clip_to_extent="1" force_rhr="0" type="marker" alpha="0.6">
+        <data_defined_properties>
+          <Option type="Map">
+            <Option value="" name="name" type="QString"/>
+            <Option name="properties"/>
+            <Option value="collection" name="type" type="QString"/>
+          </Option>
+        </data_defined_properties>
+        <layer enabled="1" class="SimpleMarker" pass="0" locked="0">
+          <Option type="Map">
+            <Option value="0" name="angle" type="QString"/>
+            <Option value="square" name="cap_style" type="QString"/>
+            <Option value="255,127,0,255" name="color" type="QString"/>
+            <Option value="1" name="horizontal_anchor_point" type="QString"/>
+            <Option value="bevel" name="joinstyle" type="QString"/>
+            <Option value="circle" name="name" type="QString"/>
+            <Option value="0,0" name="offset" type="QString"/>
+            <Option value="3x:0,0,0,0,0,0" name="offset_map_unit_scale" type="QString"/>
+            <Option value="MM" name="offset_unit" type="QString"/>
+            <Option value="90,90,90,255" name="outline_color" type="QString"/>
+            <Option value="solid" name="outline_style" type="QString"/>
+            <Option value="0.3" name="outline_width" type="QString"/>
+            <Option value="3x:0,0,0,0,0,0" name="outline_width_map_unit_scale" type="QString"/>
+            <Option value="MM" name="outline_width_unit" type="QString"/>
+            <Option value="diameter" name="scale_method" type="QString"/>
+            <Option value="2.4" name="size" type="QString"/>
+            <Option value="3x:0,0,0,0,0,0" name="size_map_unit_scale" type="QString"/>
+            <Option value="MM" name="size_unit" type="QString"/>
+            <Option value="1" name="vertical_anchor_point" type="QString"/>
           </Option>
           <prop v="0" k="angle"/>
           <prop v="square" k="cap_style"/>
@@ -175,42 +234,42 @@
           <prop v="1" k="vertical_anchor_point"/>
           <data_defined_properties>
             <Option type="Map">
-              <Option value="" type="QString" name="name"/>
+              <Option value="" name="name" type="QString"/>
               <Option name="properties"/>
-              <Option value="collection" type="QString" name="type"/>
+              <Option value="collection" name="type" type="QString"/>
             </Option>
           </data_defined_properties>
         </layer>
       </symbol>
-      <symbol alpha="0.6" clip_to_extent="1" type="marker" name="3" force_rhr="0">
+      <symbol name="4" clip_to_extent="1" force_rhr="0" type="marker" alpha="0.6">
         <data_defined_properties>
           <Option type="Map">
-            <Option value="" type="QString" name="name"/>
+            <Option value="" name="name" type="QString"/>
             <Option name="properties"/>
-            <Option value="collection" type="QString" name="type"/>
+            <Option value="collection" name="type" type="QString"/>
           </Option>
         </data_defined_properties>
-        <layer pass="0" locked="0" enabled="1" class="SimpleMarker">
+        <layer enabled="1" class="SimpleMarker" pass="0" locked="0">
           <Option type="Map">
-            <Option value="0" type="QString" name="angle"/>
-            <Option value="square" type="QString" name="cap_style"/>
-            <Option value="150,150,150,255" type="QString" name="color"/>
-            <Option value="1" type="QString" name="horizontal_anchor_point"/>
-            <Option value="bevel" type="QString" name="joinstyle"/>
-            <Option value="circle" type="QString" name="name"/>
-            <Option value="0,0" type="QString" name="offset"/>
-            <Option value="3x:0,0,0,0,0,0" type="QString" name="offset_map_unit_scale"/>
-            <Option value="MM" type="QString" name="offset_unit"/>
-            <Option value="90,90,90,255" type="QString" name="outline_color"/>
-            <Option value="solid" type="QString" name="outline_style"/>
-            <Option value="0.3" type="QString" name="outline_width"/>
-            <Option value="3x:0,0,0,0,0,0" type="QString" name="outline_width_map_unit_scale"/>
-            <Option value="MM" type="QString" name="outline_width_unit"/>
-            <Option value="diameter" type="QString" name="scale_method"/>
-            <Option value="2" type="QString" name="size"/>
-            <Option value="3x:0,0,0,0,0,0" type="QString" name="size_map_unit_scale"/>
-            <Option value="MM" type="QString" name="size_unit"/>
-            <Option value="1" type="QString" name="vertical_anchor_point"/>
+            <Option value="0" name="angle" type="QString"/>
+            <Option value="square" name="cap_style" type="QString"/>
+            <Option value="150,150,150,255" name="color" type="QString"/>
+            <Option value="1" name="horizontal_anchor_point" type="QString"/>
+            <Option value="bevel" name="joinstyle" type="QString"/>
+            <Option value="circle" name="name" type="QString"/>
+            <Option value="0,0" name="offset" type="QString"/>
+            <Option value="3x:0,0,0,0,0,0" name="offset_map_unit_scale" type="QString"/>
+            <Option value="MM" name="offset_unit" type="QString"/>
+            <Option value="90,90,90,255" name="outline_color" type="QString"/>
+            <Option value="solid" name="outline_style" type="QString"/>
+            <Option value="0.3" name="outline_width" type="QString"/>
+            <Option value="3x:0,0,0,0,0,0" name="outline_width_map_unit_scale" type="QString"/>
+            <Option value="MM" name="outline_width_unit" type="QString"/>
+            <Option value="diameter" name="scale_method" type="QString"/>
+            <Option value="2" name="size" type="QString"/>
+            <Option value="3x:0,0,0,0,0,0" name="size_map_unit_scale" type="QString"/>
+            <Option value="MM" name="size_unit" type="QString"/>
+            <Option value="1" name="vertical_anchor_point" type="QString"/>
           </Option>
           <prop v="0" k="angle"/>
           <prop v="square" k="cap_style"/>
@@ -233,9 +292,9 @@
           <prop v="1" k="vertical_anchor_point"/>
           <data_defined_properties>
             <Option type="Map">
-              <Option value="" type="QString" name="name"/>
+              <Option value="" name="name" type="QString"/>
               <Option name="properties"/>
-              <Option value="collection" type="QString" name="type"/>
+              <Option value="collection" name="type" type="QString"/>
             </Option>
           </data_defined_properties>
         </layer>
@@ -246,35 +305,35 @@
     </orderby>
   </renderer-v2>
   <labeling type="rule-based">
-    <rules key="{40eb4fcd-6591-4749-84cc-efddc789eb2c}">
-      <rule filter="&quot;class_cue&quot; IN ('at_mine', 'ap_mine')" key="{1ff9706e-9bf4-4b66-9a39-3734f66f0555}" description="Mine indications">
+    <rules key="{1e2eb5c2-92c6-4e00-8410-4877f7169946}">
+      <rule description="Mine indications" key="{0f805623-bfa6-4397-a820-cff9dccbffbe}" filter="coalesce(attribute('p_mine') >= 0.5, &quot;class_cue&quot; IN ('at_mine', 'ap_mine'))">
         <settings calloutType="simple">
-          <text-style fontLetterSpacing="0" fontWordSpacing="0" textColor="120,0,0,255" fontUnderline="0" previewBkgrdColor="255,255,255,255" fontSize="9" useSubstitutions="0" fontSizeUnit="Point" isExpression="0" fontFamily="DejaVu Sans" allowHtml="0" blendMode="0" fontWeight="75" legendString="Aa" fontKerning="1" fontItalic="0" namedStyle="" fontStrikeout="0" textOrientation="horizontal" fieldName="short_id" textOpacity="1" fontSizeMapUnitScale="3x:0,0,0,0,0,0" multilineHeight="1" capitalization="0">
+          <text-style fontLetterSpacing="0" textOrientation="horizontal" blendMode="0" isExpression="0" textColor="120,0,0,255" fontKerning="1" fontStrikeout="0" multilineHeight="1" fontItalic="0" fontSizeMapUnitScale="3x:0,0,0,0,0,0" useSubstitutions="0" fontUnderline="0" previewBkgrdColor="255,255,255,255" fontWordSpacing="0" fieldName="short_id" fontFamily="DejaVu Sans" allowHtml="0" legendString="Aa" fontSizeUnit="Point" fontWeight="75" namedStyle="" textOpacity="1" fontSize="9" capitalization="0">
             <families/>
-            <text-buffer bufferSizeUnits="MM" bufferBlendMode="0" bufferSize="0.80000000000000004" bufferJoinStyle="128" bufferOpacity="1" bufferDraw="1" bufferNoFill="1" bufferSizeMapUnitScale="3x:0,0,0,0,0,0" bufferColor="255,255,255,255"/>
-            <text-mask maskOpacity="1" maskJoinStyle="128" maskSizeMapUnitScale="3x:0,0,0,0,0,0" maskEnabled="0" maskType="0" maskSizeUnits="MM" maskSize="1.5" maskedSymbolLayers=""/>
-            <background shapeRadiiY="0" shapeDraw="0" shapeBorderWidthMapUnitScale="3x:0,0,0,0,0,0" shapeRadiiX="0" shapeSVGFile="" shapeOffsetUnit="MM" shapeSizeType="0" shapeRadiiUnit="MM" shapeSizeUnit="MM" shapeBlendMode="0" shapeSizeMapUnitScale="3x:0,0,0,0,0,0" shapeBorderColor="128,128,128,255" shapeBorderWidth="0" shapeOffsetX="0" shapeOpacity="1" shapeRotationType="0" shapeOffsetY="0" shapeSizeX="0" shapeJoinStyle="64" shapeOffsetMapUnitScale="3x:0,0,0,0,0,0" shapeType="0" shapeRotation="0" shapeRadiiMapUnitScale="3x:0,0,0,0,0,0" shapeBorderWidthUnit="MM" shapeSizeY="0" shapeFillColor="255,255,255,255">
-              <symbol alpha="1" clip_to_extent="1" type="fill" name="fillSymbol" force_rhr="0">
+            <text-buffer bufferSizeMapUnitScale="3x:0,0,0,0,0,0" bufferSizeUnits="MM" bufferBlendMode="0" bufferDraw="1" bufferOpacity="1" bufferNoFill="1" bufferColor="255,255,255,255" bufferSize="0.80000000000000004" bufferJoinStyle="128"/>
+            <text-mask maskSize="1.5" maskedSymbolLayers="" maskEnabled="0" maskType="0" maskJoinStyle="128" maskOpacity="1" maskSizeUnits="MM" maskSizeMapUnitScale="3x:0,0,0,0,0,0"/>
+            <background shapeSizeUnit="MM" shapeBorderWidthUnit="MM" shapeSizeType="0" shapeRotation="0" shapeRadiiUnit="MM" shapeRotationType="0" shapeBorderColor="128,128,128,255" shapeSizeMapUnitScale="3x:0,0,0,0,0,0" shapeDraw="0" shapeRadiiMapUnitScale="3x:0,0,0,0,0,0" shapeOpacity="1" shapeBorderWidthMapUnitScale="3x:0,0,0,0,0,0" shapeRadiiX="0" shapeRadiiY="0" shapeFillColor="255,255,255,255" shapeJoinStyle="64" shapeBlendMode="0" shapeOffsetX="0" shapeSVGFile="" shapeBorderWidth="0" shapeOffsetMapUnitScale="3x:0,0,0,0,0,0" shapeType="0" shapeSizeX="0" shapeOffsetUnit="MM" shapeSizeY="0" shapeOffsetY="0">
+              <symbol name="fillSymbol" clip_to_extent="1" force_rhr="0" type="fill" alpha="1">
                 <data_defined_properties>
                   <Option type="Map">
-                    <Option value="" type="QString" name="name"/>
+                    <Option value="" name="name" type="QString"/>
                     <Option name="properties"/>
-                    <Option value="collection" type="QString" name="type"/>
+                    <Option value="collection" name="type" type="QString"/>
                   </Option>
                 </data_defined_properties>
-                <layer pass="0" locked="0" enabled="1" class="SimpleFill">
+                <layer enabled="1" class="SimpleFill" pass="0" locked="0">
                   <Option type="Map">
-                    <Option value="3x:0,0,0,0,0,0" type="QString" name="border_width_map_unit_scale"/>
-                    <Option value="255,255,255,255" type="QString" name="color"/>
-                    <Option value="bevel" type="QString" name="joinstyle"/>
-                    <Option value="0,0" type="QString" name="offset"/>
-                    <Option value="3x:0,0,0,0,0,0" type="QString" name="offset_map_unit_scale"/>
-                    <Option value="MM" type="QString" name="offset_unit"/>
-                    <Option value="128,128,128,255" type="QString" name="outline_color"/>
-                    <Option value="no" type="QString" name="outline_style"/>
-                    <Option value="0" type="QString" name="outline_width"/>
-                    <Option value="MM" type="QString" name="outline_width_unit"/>
-                    <Option value="solid" type="QString" name="style"/>
+                    <Option value="3x:0,0,0,0,0,0" name="border_width_map_unit_scale" type="QString"/>
+                    <Option value="255,255,255,255" name="color" type="QString"/>
+                    <Option value="bevel" name="joinstyle" type="QString"/>
+                    <Option value="0,0" name="offset" type="QString"/>
+                    <Option value="3x:0,0,0,0,0,0" name="offset_map_unit_scale" type="QString"/>
+                    <Option value="MM" name="offset_unit" type="QString"/>
+                    <Option value="128,128,128,255" name="outline_color" type="QString"/>
+                    <Option value="no" name="outline_style" type="QString"/>
+                    <Option value="0" name="outline_width" type="QString"/>
+                    <Option value="MM" name="outline_width_unit" type="QString"/>
+                    <Option value="solid" name="style" type="QString"/>
                   </Option>
                   <prop v="3x:0,0,0,0,0,0" k="border_width_map_unit_scale"/>
                   <prop v="255,255,255,255" k="color"/>
@@ -289,56 +348,56 @@
                   <prop v="solid" k="style"/>
                   <data_defined_properties>
                     <Option type="Map">
-                      <Option value="" type="QString" name="name"/>
+                      <Option value="" name="name" type="QString"/>
                       <Option name="properties"/>
-                      <Option value="collection" type="QString" name="type"/>
+                      <Option value="collection" name="type" type="QString"/>
                     </Option>
                   </data_defined_properties>
                 </layer>
               </symbol>
             </background>
-            <shadow shadowRadius="1.5" shadowScale="100" shadowDraw="0" shadowOpacity="0.69999999999999996" shadowRadiusAlphaOnly="0" shadowColor="0,0,0,255" shadowOffsetAngle="135" shadowBlendMode="6" shadowOffsetDist="1" shadowRadiusMapUnitScale="3x:0,0,0,0,0,0" shadowOffsetUnit="MM" shadowOffsetMapUnitScale="3x:0,0,0,0,0,0" shadowOffsetGlobal="1" shadowRadiusUnit="MM" shadowUnder="0"/>
+            <shadow shadowDraw="0" shadowRadiusMapUnitScale="3x:0,0,0,0,0,0" shadowScale="100" shadowUnder="0" shadowRadiusUnit="MM" shadowBlendMode="6" shadowRadiusAlphaOnly="0" shadowOpacity="0.69999999999999996" shadowOffsetMapUnitScale="3x:0,0,0,0,0,0" shadowOffsetGlobal="1" shadowOffsetDist="1" shadowColor="0,0,0,255" shadowOffsetAngle="135" shadowOffsetUnit="MM" shadowRadius="1.5"/>
             <dd_properties>
               <Option type="Map">
-                <Option value="" type="QString" name="name"/>
+                <Option value="" name="name" type="QString"/>
                 <Option name="properties"/>
-                <Option value="collection" type="QString" name="type"/>
+                <Option value="collection" name="type" type="QString"/>
               </Option>
             </dd_properties>
             <substitutions/>
           </text-style>
-          <text-format addDirectionSymbol="0" placeDirectionSymbol="0" multilineAlign="3" wrapChar="" leftDirectionSymbol="&lt;" decimals="3" useMaxLineLengthForAutoWrap="1" autoWrapLength="0" formatNumbers="0" plussign="0" rightDirectionSymbol=">" reverseDirectionSymbol="0"/>
-          <placement offsetType="0" repeatDistance="0" lineAnchorClipping="0" labelOffsetMapUnitScale="3x:0,0,0,0,0,0" overrunDistanceMapUnitScale="3x:0,0,0,0,0,0" lineAnchorPercent="0.5" placement="6" centroidWhole="0" distUnits="MM" maxCurvedCharAngleOut="-25" layerType="UnknownGeometry" priority="9" geometryGeneratorEnabled="0" dist="1" rotationAngle="0" geometryGeneratorType="PointGeometry" yOffset="0" quadOffset="4" overrunDistanceUnit="MM" centroidInside="0" placementFlags="10" fitInPolygonOnly="0" offsetUnits="MM" polygonPlacementFlags="2" distMapUnitScale="3x:0,0,0,0,0,0" rotationUnit="AngleDegrees" repeatDistanceUnits="MM" repeatDistanceMapUnitScale="3x:0,0,0,0,0,0" predefinedPositionOrder="TR,TL,BR,BL,R,L,TSR,BSR" preserveRotation="1" xOffset="0" maxCurvedCharAngleIn="25" lineAnchorType="0" overrunDistance="0" geometryGenerator=""/>
-          <rendering limitNumLabels="0" fontMaxPixelSize="10000" fontMinPixelSize="0" obstacle="1" maxNumLabels="2000" labelPerPart="0" mergeLines="0" unplacedVisibility="0" fontLimitPixelSize="0" scaleMax="0" obstacleFactor="1" displayAll="0" obstacleType="1" minFeatureSize="0" upsidedownLabels="0" zIndex="0" scaleVisibility="0" drawLabels="1" scaleMin="0"/>
+          <text-format decimals="3" formatNumbers="0" useMaxLineLengthForAutoWrap="1" addDirectionSymbol="0" plussign="0" placeDirectionSymbol="0" wrapChar="" reverseDirectionSymbol="0" rightDirectionSymbol=">" autoWrapLength="0" leftDirectionSymbol="&lt;" multilineAlign="3"/>
+          <placement maxCurvedCharAngleOut="-25" centroidWhole="0" centroidInside="0" rotationUnit="AngleDegrees" dist="1" overrunDistanceMapUnitScale="3x:0,0,0,0,0,0" xOffset="0" fitInPolygonOnly="0" distMapUnitScale="3x:0,0,0,0,0,0" lineAnchorPercent="0.5" rotationAngle="0" repeatDistanceMapUnitScale="3x:0,0,0,0,0,0" placement="6" repeatDistanceUnits="MM" layerType="UnknownGeometry" placementFlags="10" maxCurvedCharAngleIn="25" polygonPlacementFlags="2" yOffset="0" labelOffsetMapUnitScale="3x:0,0,0,0,0,0" repeatDistance="0" quadOffset="4" overrunDistanceUnit="MM" geometryGeneratorType="PointGeometry" offsetUnits="MM" offsetType="0" preserveRotation="1" distUnits="MM" lineAnchorClipping="0" predefinedPositionOrder="TR,TL,BR,BL,R,L,TSR,BSR" geometryGenerator="" priority="9" lineAnchorType="0" geometryGeneratorEnabled="0" overrunDistance="0"/>
+          <rendering scaleMin="0" labelPerPart="0" obstacleFactor="1" scaleMax="0" limitNumLabels="0" minFeatureSize="0" fontMinPixelSize="0" maxNumLabels="2000" displayAll="0" obstacle="1" mergeLines="0" scaleVisibility="0" unplacedVisibility="0" fontMaxPixelSize="10000" obstacleType="1" zIndex="0" drawLabels="1" fontLimitPixelSize="0" upsidedownLabels="0"/>
           <dd_properties>
             <Option type="Map">
-              <Option value="" type="QString" name="name"/>
+              <Option value="" name="name" type="QString"/>
               <Option name="properties"/>
-              <Option value="collection" type="QString" name="type"/>
+              <Option value="collection" name="type" type="QString"/>
             </Option>
           </dd_properties>
           <callout type="simple">
             <Option type="Map">
-              <Option value="pole_of_inaccessibility" type="QString" name="anchorPoint"/>
-              <Option value="0" type="int" name="blendMode"/>
-              <Option type="Map" name="ddProperties">
-                <Option value="" type="QString" name="name"/>
+              <Option value="pole_of_inaccessibility" name="anchorPoint" type="QString"/>
+              <Option value="0" name="blendMode" type="int"/>
+              <Option name="ddProperties" type="Map">
+                <Option value="" name="name" type="QString"/>
                 <Option name="properties"/>
-                <Option value="collection" type="QString" name="type"/>
+                <Option value="collection" name="type" type="QString"/>
               </Option>
-              <Option value="false" type="bool" name="drawToAllParts"/>
-              <Option value="0" type="QString" name="enabled"/>
-              <Option value="point_on_exterior" type="QString" name="labelAnchorPoint"/>
-              <Option value="&lt;symbol alpha=&quot;1&quot; clip_to_extent=&quot;1&quot; type=&quot;line&quot; name=&quot;symbol&quot; force_rhr=&quot;0&quot;>&lt;data_defined_properties>&lt;Option type=&quot;Map&quot;>&lt;Option value=&quot;&quot; type=&quot;QString&quot; name=&quot;name&quot;/>&lt;Option name=&quot;properties&quot;/>&lt;Option value=&quot;collection&quot; type=&quot;QString&quot; name=&quot;type&quot;/>&lt;/Option>&lt;/data_defined_properties>&lt;layer pass=&quot;0&quot; locked=&quot;0&quot; enabled=&quot;1&quot; class=&quot;SimpleLine&quot;>&lt;Option type=&quot;Map&quot;>&lt;Option value=&quot;0&quot; type=&quot;QString&quot; name=&quot;align_dash_pattern&quot;/>&lt;Option value=&quot;square&quot; type=&quot;QString&quot; name=&quot;capstyle&quot;/>&lt;Option value=&quot;5;2&quot; type=&quot;QString&quot; name=&quot;customdash&quot;/>&lt;Option value=&quot;3x:0,0,0,0,0,0&quot; type=&quot;QString&quot; name=&quot;customdash_map_unit_scale&quot;/>&lt;Option value=&quot;MM&quot; type=&quot;QString&quot; name=&quot;customdash_unit&quot;/>&lt;Option value=&quot;0&quot; type=&quot;QString&quot; name=&quot;dash_pattern_offset&quot;/>&lt;Option value=&quot;3x:0,0,0,0,0,0&quot; type=&quot;QString&quot; name=&quot;dash_pattern_offset_map_unit_scale&quot;/>&lt;Option value=&quot;MM&quot; type=&quot;QString&quot; name=&quot;dash_pattern_offset_unit&quot;/>&lt;Option value=&quot;0&quot; type=&quot;QString&quot; name=&quot;draw_inside_polygon&quot;/>&lt;Option value=&quot;bevel&quot; type=&quot;QString&quot; name=&quot;joinstyle&quot;/>&lt;Option value=&quot;60,60,60,255&quot; type=&quot;QString&quot; name=&quot;line_color&quot;/>&lt;Option value=&quot;solid&quot; type=&quot;QString&quot; name=&quot;line_style&quot;/>&lt;Option value=&quot;0.3&quot; type=&quot;QString&quot; name=&quot;line_width&quot;/>&lt;Option value=&quot;MM&quot; type=&quot;QString&quot; name=&quot;line_width_unit&quot;/>&lt;Option value=&quot;0&quot; type=&quot;QString&quot; name=&quot;offset&quot;/>&lt;Option value=&quot;3x:0,0,0,0,0,0&quot; type=&quot;QString&quot; name=&quot;offset_map_unit_scale&quot;/>&lt;Option value=&quot;MM&quot; type=&quot;QString&quot; name=&quot;offset_unit&quot;/>&lt;Option value=&quot;0&quot; type=&quot;QString&quot; name=&quot;ring_filter&quot;/>&lt;Option value=&quot;0&quot; type=&quot;QString&quot; name=&quot;trim_distance_end&quot;/>&lt;Option value=&quot;3x:0,0,0,0,0,0&quot; type=&quot;QString&quot; name=&quot;trim_distance_end_map_unit_scale&quot;/>&lt;Option value=&quot;MM&quot; type=&quot;QString&quot; name=&quot;trim_distance_end_unit&quot;/>&lt;Option value=&quot;0&quot; type=&quot;QString&quot; name=&quot;trim_distance_start&quot;/>&lt;Option value=&quot;3x:0,0,0,0,0,0&quot; type=&quot;QString&quot; name=&quot;trim_distance_start_map_unit_scale&quot;/>&lt;Option value=&quot;MM&quot; type=&quot;QString&quot; name=&quot;trim_distance_start_unit&quot;/>&lt;Option value=&quot;0&quot; type=&quot;QString&quot; name=&quot;tweak_dash_pattern_on_corners&quot;/>&lt;Option value=&quot;0&quot; type=&quot;QString&quot; name=&quot;use_custom_dash&quot;/>&lt;Option value=&quot;3x:0,0,0,0,0,0&quot; type=&quot;QString&quot; name=&quot;width_map_unit_scale&quot;/>&lt;/Option>&lt;prop v=&quot;0&quot; k=&quot;align_dash_pattern&quot;/>&lt;prop v=&quot;square&quot; k=&quot;capstyle&quot;/>&lt;prop v=&quot;5;2&quot; k=&quot;customdash&quot;/>&lt;prop v=&quot;3x:0,0,0,0,0,0&quot; k=&quot;customdash_map_unit_scale&quot;/>&lt;prop v=&quot;MM&quot; k=&quot;customdash_unit&quot;/>&lt;prop v=&quot;0&quot; k=&quot;dash_pattern_offset&quot;/>&lt;prop v=&quot;3x:0,0,0,0,0,0&quot; k=&quot;dash_pattern_offset_map_unit_scale&quot;/>&lt;prop v=&quot;MM&quot; k=&quot;dash_pattern_offset_unit&quot;/>&lt;prop v=&quot;0&quot; k=&quot;draw_inside_polygon&quot;/>&lt;prop v=&quot;bevel&quot; k=&quot;joinstyle&quot;/>&lt;prop v=&quot;60,60,60,255&quot; k=&quot;line_color&quot;/>&lt;prop v=&quot;solid&quot; k=&quot;line_style&quot;/>&lt;prop v=&quot;0.3&quot; k=&quot;line_width&quot;/>&lt;prop v=&quot;MM&quot; k=&quot;line_width_unit&quot;/>&lt;prop v=&quot;0&quot; k=&quot;offset&quot;/>&lt;prop v=&quot;3x:0,0,0,0,0,0&quot; k=&quot;offset_map_unit_scale&quot;/>&lt;prop v=&quot;MM&quot; k=&quot;offset_unit&quot;/>&lt;prop v=&quot;0&quot; k=&quot;ring_filter&quot;/>&lt;prop v=&quot;0&quot; k=&quot;trim_distance_end&quot;/>&lt;prop v=&quot;3x:0,0,0,0,0,0&quot; k=&quot;trim_distance_end_map_unit_scale&quot;/>&lt;prop v=&quot;MM&quot; k=&quot;trim_distance_end_unit&quot;/>&lt;prop v=&quot;0&quot; k=&quot;trim_distance_start&quot;/>&lt;prop v=&quot;3x:0,0,0,0,0,0&quot; k=&quot;trim_distance_start_map_unit_scale&quot;/>&lt;prop v=&quot;MM&quot; k=&quot;trim_distance_start_unit&quot;/>&lt;prop v=&quot;0&quot; k=&quot;tweak_dash_pattern_on_corners&quot;/>&lt;prop v=&quot;0&quot; k=&quot;use_custom_dash&quot;/>&lt;prop v=&quot;3x:0,0,0,0,0,0&quot; k=&quot;width_map_unit_scale&quot;/>&lt;data_defined_properties>&lt;Option type=&quot;Map&quot;>&lt;Option value=&quot;&quot; type=&quot;QString&quot; name=&quot;name&quot;/>&lt;Option name=&quot;properties&quot;/>&lt;Option value=&quot;collection&quot; type=&quot;QString&quot; name=&quot;type&quot;/>&lt;/Option>&lt;/data_defined_properties>&lt;/layer>&lt;/symbol>" type="QString" name="lineSymbol"/>
-              <Option value="0" type="double" name="minLength"/>
-              <Option value="3x:0,0,0,0,0,0" type="QString" name="minLengthMapUnitScale"/>
-              <Option value="MM" type="QString" name="minLengthUnit"/>
-              <Option value="0" type="double" name="offsetFromAnchor"/>
-              <Option value="3x:0,0,0,0,0,0" type="QString" name="offsetFromAnchorMapUnitScale"/>
-              <Option value="MM" type="QString" name="offsetFromAnchorUnit"/>
-              <Option value="0" type="double" name="offsetFromLabel"/>
-              <Option value="3x:0,0,0,0,0,0" type="QString" name="offsetFromLabelMapUnitScale"/>
-              <Option value="MM" type="QString" name="offsetFromLabelUnit"/>
+              <Option value="false" name="drawToAllParts" type="bool"/>
+              <Option value="0" name="enabled" type="QString"/>
+              <Option value="point_on_exterior" name="labelAnchorPoint" type="QString"/>
+              <Option value="&lt;symbol name=&quot;symbol&quot; clip_to_extent=&quot;1&quot; force_rhr=&quot;0&quot; type=&quot;line&quot; alpha=&quot;1&quot;>&lt;data_defined_properties>&lt;Option type=&quot;Map&quot;>&lt;Option value=&quot;&quot; name=&quot;name&quot; type=&quot;QString&quot;/>&lt;Option name=&quot;properties&quot;/>&lt;Option value=&quot;collection&quot; name=&quot;type&quot; type=&quot;QString&quot;/>&lt;/Option>&lt;/data_defined_properties>&lt;layer enabled=&quot;1&quot; class=&quot;SimpleLine&quot; pass=&quot;0&quot; locked=&quot;0&quot;>&lt;Option type=&quot;Map&quot;>&lt;Option value=&quot;0&quot; name=&quot;align_dash_pattern&quot; type=&quot;QString&quot;/>&lt;Option value=&quot;square&quot; name=&quot;capstyle&quot; type=&quot;QString&quot;/>&lt;Option value=&quot;5;2&quot; name=&quot;customdash&quot; type=&quot;QString&quot;/>&lt;Option value=&quot;3x:0,0,0,0,0,0&quot; name=&quot;customdash_map_unit_scale&quot; type=&quot;QString&quot;/>&lt;Option value=&quot;MM&quot; name=&quot;customdash_unit&quot; type=&quot;QString&quot;/>&lt;Option value=&quot;0&quot; name=&quot;dash_pattern_offset&quot; type=&quot;QString&quot;/>&lt;Option value=&quot;3x:0,0,0,0,0,0&quot; name=&quot;dash_pattern_offset_map_unit_scale&quot; type=&quot;QString&quot;/>&lt;Option value=&quot;MM&quot; name=&quot;dash_pattern_offset_unit&quot; type=&quot;QString&quot;/>&lt;Option value=&quot;0&quot; name=&quot;draw_inside_polygon&quot; type=&quot;QString&quot;/>&lt;Option value=&quot;bevel&quot; name=&quot;joinstyle&quot; type=&quot;QString&quot;/>&lt;Option value=&quot;60,60,60,255&quot; name=&quot;line_color&quot; type=&quot;QString&quot;/>&lt;Option value=&quot;solid&quot; name=&quot;line_style&quot; type=&quot;QString&quot;/>&lt;Option value=&quot;0.3&quot; name=&quot;line_width&quot; type=&quot;QString&quot;/>&lt;Option value=&quot;MM&quot; name=&quot;line_width_unit&quot; type=&quot;QString&quot;/>&lt;Option value=&quot;0&quot; name=&quot;offset&quot; type=&quot;QString&quot;/>&lt;Option value=&quot;3x:0,0,0,0,0,0&quot; name=&quot;offset_map_unit_scale&quot; type=&quot;QString&quot;/>&lt;Option value=&quot;MM&quot; name=&quot;offset_unit&quot; type=&quot;QString&quot;/>&lt;Option value=&quot;0&quot; name=&quot;ring_filter&quot; type=&quot;QString&quot;/>&lt;Option value=&quot;0&quot; name=&quot;trim_distance_end&quot; type=&quot;QString&quot;/>&lt;Option value=&quot;3x:0,0,0,0,0,0&quot; name=&quot;trim_distance_end_map_unit_scale&quot; type=&quot;QString&quot;/>&lt;Option value=&quot;MM&quot; name=&quot;trim_distance_end_unit&quot; type=&quot;QString&quot;/>&lt;Option value=&quot;0&quot; name=&quot;trim_distance_start&quot; type=&quot;QString&quot;/>&lt;Option value=&quot;3x:0,0,0,0,0,0&quot; name=&quot;trim_distance_start_map_unit_scale&quot; type=&quot;QString&quot;/>&lt;Option value=&quot;MM&quot; name=&quot;trim_distance_start_unit&quot; type=&quot;QString&quot;/>&lt;Option value=&quot;0&quot; name=&quot;tweak_dash_pattern_on_corners&quot; type=&quot;QString&quot;/>&lt;Option value=&quot;0&quot; name=&quot;use_custom_dash&quot; type=&quot;QString&quot;/>&lt;Option value=&quot;3x:0,0,0,0,0,0&quot; name=&quot;width_map_unit_scale&quot; type=&quot;QString&quot;/>&lt;/Option>&lt;prop v=&quot;0&quot; k=&quot;align_dash_pattern&quot;/>&lt;prop v=&quot;square&quot; k=&quot;capstyle&quot;/>&lt;prop v=&quot;5;2&quot; k=&quot;customdash&quot;/>&lt;prop v=&quot;3x:0,0,0,0,0,0&quot; k=&quot;customdash_map_unit_scale&quot;/>&lt;prop v=&quot;MM&quot; k=&quot;customdash_unit&quot;/>&lt;prop v=&quot;0&quot; k=&quot;dash_pattern_offset&quot;/>&lt;prop v=&quot;3x:0,0,0,0,0,0&quot; k=&quot;dash_pattern_offset_map_unit_scale&quot;/>&lt;prop v=&quot;MM&quot; k=&quot;dash_pattern_offset_unit&quot;/>&lt;prop v=&quot;0&quot; k=&quot;draw_inside_polygon&quot;/>&lt;prop v=&quot;bevel&quot; k=&quot;joinstyle&quot;/>&lt;prop v=&quot;60,60,60,255&quot; k=&quot;line_color&quot;/>&lt;prop v=&quot;solid&quot; k=&quot;line_style&quot;/>&lt;prop v=&quot;0.3&quot; k=&quot;line_width&quot;/>&lt;prop v=&quot;MM&quot; k=&quot;line_width_unit&quot;/>&lt;prop v=&quot;0&quot; k=&quot;offset&quot;/>&lt;prop v=&quot;3x:0,0,0,0,0,0&quot; k=&quot;offset_map_unit_scale&quot;/>&lt;prop v=&quot;MM&quot; k=&quot;offset_unit&quot;/>&lt;prop v=&quot;0&quot; k=&quot;ring_filter&quot;/>&lt;prop v=&quot;0&quot; k=&quot;trim_distance_end&quot;/>&lt;prop v=&quot;3x:0,0,0,0,0,0&quot; k=&quot;trim_distance_end_map_unit_scale&quot;/>&lt;prop v=&quot;MM&quot; k=&quot;trim_distance_end_unit&quot;/>&lt;prop v=&quot;0&quot; k=&quot;trim_distance_start&quot;/>&lt;prop v=&quot;3x:0,0,0,0,0,0&quot; k=&quot;trim_distance_start_map_unit_scale&quot;/>&lt;prop v=&quot;MM&quot; k=&quot;trim_distance_start_unit&quot;/>&lt;prop v=&quot;0&quot; k=&quot;tweak_dash_pattern_on_corners&quot;/>&lt;prop v=&quot;0&quot; k=&quot;use_custom_dash&quot;/>&lt;prop v=&quot;3x:0,0,0,0,0,0&quot; k=&quot;width_map_unit_scale&quot;/>&lt;data_defined_properties>&lt;Option type=&quot;Map&quot;>&lt;Option value=&quot;&quot; name=&quot;name&quot; type=&quot;QString&quot;/>&lt;Option name=&quot;properties&quot;/>&lt;Option value=&quot;collection&quot; name=&quot;type&quot; type=&quot;QString&quot;/>&lt;/Option>&lt;/data_defined_properties>&lt;/layer>&lt;/symbol>" name="lineSymbol" type="QString"/>
+              <Option value="0" name="minLength" type="double"/>
+              <Option value="3x:0,0,0,0,0,0" name="minLengthMapUnitScale" type="QString"/>
+              <Option value="MM" name="minLengthUnit" type="QString"/>
+              <Option value="0" name="offsetFromAnchor" type="double"/>
+              <Option value="3x:0,0,0,0,0,0" name="offsetFromAnchorMapUnitScale" type="QString"/>
+              <Option value="MM" name="offsetFromAnchorUnit" type="QString"/>
+              <Option value="0" name="offsetFromLabel" type="double"/>
+              <Option value="3x:0,0,0,0,0,0" name="offsetFromLabelMapUnitScale" type="QString"/>
+              <Option value="MM" name="offsetFromLabelUnit" type="QString"/>
             </Option>
           </callout>
         </settings>
@@ -353,8 +412,8 @@
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option value="false" type="bool" name="IsMultiline"/>
-            <Option value="false" type="bool" name="UseHtml"/>
+            <Option value="false" name="IsMultiline" type="bool"/>
+            <Option value="false" name="UseHtml" type="bool"/>
           </Option>
         </config>
       </editWidget>
@@ -363,12 +422,12 @@
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option value="true" type="bool" name="AllowNull"/>
-            <Option value="1e+09" type="double" name="Max"/>
-            <Option value="-1e+09" type="double" name="Min"/>
-            <Option value="2" type="int" name="Precision"/>
-            <Option value="1" type="int" name="Step"/>
-            <Option value="SpinBox" type="QString" name="Style"/>
+            <Option value="true" name="AllowNull" type="bool"/>
+            <Option value="1e+09" name="Max" type="double"/>
+            <Option value="-1e+09" name="Min" type="double"/>
+            <Option value="2" name="Precision" type="int"/>
+            <Option value="1" name="Step" type="int"/>
+            <Option value="SpinBox" name="Style" type="QString"/>
           </Option>
         </config>
       </editWidget>
@@ -377,12 +436,12 @@
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option value="true" type="bool" name="AllowNull"/>
-            <Option value="1e+09" type="double" name="Max"/>
-            <Option value="-1e+09" type="double" name="Min"/>
-            <Option value="2" type="int" name="Precision"/>
-            <Option value="1" type="int" name="Step"/>
-            <Option value="SpinBox" type="QString" name="Style"/>
+            <Option value="true" name="AllowNull" type="bool"/>
+            <Option value="1e+09" name="Max" type="double"/>
+            <Option value="-1e+09" name="Min" type="double"/>
+            <Option value="2" name="Precision" type="int"/>
+            <Option value="1" name="Step" type="int"/>
+            <Option value="SpinBox" name="Style" type="QString"/>
           </Option>
         </config>
       </editWidget>
@@ -391,12 +450,12 @@
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option value="true" type="bool" name="AllowNull"/>
-            <Option value="1e+09" type="double" name="Max"/>
-            <Option value="-1e+09" type="double" name="Min"/>
-            <Option value="7" type="int" name="Precision"/>
-            <Option value="1" type="int" name="Step"/>
-            <Option value="SpinBox" type="QString" name="Style"/>
+            <Option value="true" name="AllowNull" type="bool"/>
+            <Option value="1e+09" name="Max" type="double"/>
+            <Option value="-1e+09" name="Min" type="double"/>
+            <Option value="7" name="Precision" type="int"/>
+            <Option value="1" name="Step" type="int"/>
+            <Option value="SpinBox" name="Style" type="QString"/>
           </Option>
         </config>
       </editWidget>
@@ -405,12 +464,12 @@
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option value="true" type="bool" name="AllowNull"/>
-            <Option value="1e+09" type="double" name="Max"/>
-            <Option value="-1e+09" type="double" name="Min"/>
-            <Option value="7" type="int" name="Precision"/>
-            <Option value="1" type="int" name="Step"/>
-            <Option value="SpinBox" type="QString" name="Style"/>
+            <Option value="true" name="AllowNull" type="bool"/>
+            <Option value="1e+09" name="Max" type="double"/>
+            <Option value="-1e+09" name="Min" type="double"/>
+            <Option value="7" name="Precision" type="int"/>
+            <Option value="1" name="Step" type="int"/>
+            <Option value="SpinBox" name="Style" type="QString"/>
           </Option>
         </config>
       </editWidget>
@@ -419,12 +478,12 @@
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option value="true" type="bool" name="AllowNull"/>
-            <Option value="1e+09" type="double" name="Max"/>
-            <Option value="-1e+09" type="double" name="Min"/>
-            <Option value="3" type="int" name="Precision"/>
-            <Option value="1" type="int" name="Step"/>
-            <Option value="SpinBox" type="QString" name="Style"/>
+            <Option value="true" name="AllowNull" type="bool"/>
+            <Option value="1e+09" name="Max" type="double"/>
+            <Option value="-1e+09" name="Min" type="double"/>
+            <Option value="3" name="Precision" type="int"/>
+            <Option value="1" name="Step" type="int"/>
+            <Option value="SpinBox" name="Style" type="QString"/>
           </Option>
         </config>
       </editWidget>
@@ -433,12 +492,12 @@
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option value="true" type="bool" name="AllowNull"/>
-            <Option value="1e+09" type="double" name="Max"/>
-            <Option value="-1e+09" type="double" name="Min"/>
-            <Option value="2" type="int" name="Precision"/>
-            <Option value="1" type="int" name="Step"/>
-            <Option value="SpinBox" type="QString" name="Style"/>
+            <Option value="true" name="AllowNull" type="bool"/>
+            <Option value="1e+09" name="Max" type="double"/>
+            <Option value="-1e+09" name="Min" type="double"/>
+            <Option value="2" name="Precision" type="int"/>
+            <Option value="1" name="Step" type="int"/>
+            <Option value="SpinBox" name="Style" type="QString"/>
           </Option>
         </config>
       </editWidget>
@@ -447,12 +506,12 @@
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option value="true" type="bool" name="AllowNull"/>
-            <Option value="1e+09" type="double" name="Max"/>
-            <Option value="-1e+09" type="double" name="Min"/>
-            <Option value="2" type="int" name="Precision"/>
-            <Option value="1" type="int" name="Step"/>
-            <Option value="SpinBox" type="QString" name="Style"/>
+            <Option value="true" name="AllowNull" type="bool"/>
+            <Option value="1e+09" name="Max" type="double"/>
+            <Option value="-1e+09" name="Min" type="double"/>
+            <Option value="2" name="Precision" type="int"/>
+            <Option value="1" name="Step" type="int"/>
+            <Option value="SpinBox" name="Style" type="QString"/>
           </Option>
         </config>
       </editWidget>
@@ -461,12 +520,12 @@
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option value="true" type="bool" name="AllowNull"/>
-            <Option value="1e+09" type="double" name="Max"/>
-            <Option value="-1e+09" type="double" name="Min"/>
-            <Option value="3" type="int" name="Precision"/>
-            <Option value="1" type="int" name="Step"/>
-            <Option value="SpinBox" type="QString" name="Style"/>
+            <Option value="true" name="AllowNull" type="bool"/>
+            <Option value="1e+09" name="Max" type="double"/>
+            <Option value="-1e+09" name="Min" type="double"/>
+            <Option value="3" name="Precision" type="int"/>
+            <Option value="1" name="Step" type="int"/>
+            <Option value="SpinBox" name="Style" type="QString"/>
           </Option>
         </config>
       </editWidget>
@@ -475,12 +534,12 @@
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option value="true" type="bool" name="AllowNull"/>
-            <Option value="1e+09" type="double" name="Max"/>
-            <Option value="-1e+09" type="double" name="Min"/>
-            <Option value="3" type="int" name="Precision"/>
-            <Option value="1" type="int" name="Step"/>
-            <Option value="SpinBox" type="QString" name="Style"/>
+            <Option value="true" name="AllowNull" type="bool"/>
+            <Option value="1e+09" name="Max" type="double"/>
+            <Option value="-1e+09" name="Min" type="double"/>
+            <Option value="3" name="Precision" type="int"/>
+            <Option value="1" name="Step" type="int"/>
+            <Option value="SpinBox" name="Style" type="QString"/>
           </Option>
         </config>
       </editWidget>
@@ -489,8 +548,8 @@
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option value="false" type="bool" name="IsMultiline"/>
-            <Option value="false" type="bool" name="UseHtml"/>
+            <Option value="false" name="IsMultiline" type="bool"/>
+            <Option value="false" name="UseHtml" type="bool"/>
           </Option>
         </config>
       </editWidget>
@@ -499,8 +558,8 @@
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option value="false" type="bool" name="IsMultiline"/>
-            <Option value="false" type="bool" name="UseHtml"/>
+            <Option value="false" name="IsMultiline" type="bool"/>
+            <Option value="false" name="UseHtml" type="bool"/>
           </Option>
         </config>
       </editWidget>
@@ -509,8 +568,8 @@
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option value="false" type="bool" name="IsMultiline"/>
-            <Option value="false" type="bool" name="UseHtml"/>
+            <Option value="false" name="IsMultiline" type="bool"/>
+            <Option value="false" name="UseHtml" type="bool"/>
           </Option>
         </config>
       </editWidget>
@@ -519,8 +578,8 @@
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option value="false" type="bool" name="IsMultiline"/>
-            <Option value="false" type="bool" name="UseHtml"/>
+            <Option value="false" name="IsMultiline" type="bool"/>
+            <Option value="false" name="UseHtml" type="bool"/>
           </Option>
         </config>
       </editWidget>
@@ -529,8 +588,8 @@
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option value="false" type="bool" name="IsMultiline"/>
-            <Option value="false" type="bool" name="UseHtml"/>
+            <Option value="false" name="IsMultiline" type="bool"/>
+            <Option value="false" name="UseHtml" type="bool"/>
           </Option>
         </config>
       </editWidget>
@@ -539,12 +598,12 @@
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option value="true" type="bool" name="AllowNull"/>
-            <Option value="1e+09" type="double" name="Max"/>
-            <Option value="-1e+09" type="double" name="Min"/>
-            <Option value="2" type="int" name="Precision"/>
-            <Option value="1" type="int" name="Step"/>
-            <Option value="SpinBox" type="QString" name="Style"/>
+            <Option value="true" name="AllowNull" type="bool"/>
+            <Option value="1e+09" name="Max" type="double"/>
+            <Option value="-1e+09" name="Min" type="double"/>
+            <Option value="2" name="Precision" type="int"/>
+            <Option value="1" name="Step" type="int"/>
+            <Option value="SpinBox" name="Style" type="QString"/>
           </Option>
         </config>
       </editWidget>
@@ -553,8 +612,8 @@
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option value="false" type="bool" name="IsMultiline"/>
-            <Option value="false" type="bool" name="UseHtml"/>
+            <Option value="false" name="IsMultiline" type="bool"/>
+            <Option value="false" name="UseHtml" type="bool"/>
           </Option>
         </config>
       </editWidget>
@@ -563,12 +622,12 @@
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option value="true" type="bool" name="AllowNull"/>
-            <Option value="1e+09" type="double" name="Max"/>
-            <Option value="-1e+09" type="double" name="Min"/>
-            <Option value="2" type="int" name="Precision"/>
-            <Option value="1" type="int" name="Step"/>
-            <Option value="SpinBox" type="QString" name="Style"/>
+            <Option value="true" name="AllowNull" type="bool"/>
+            <Option value="1e+09" name="Max" type="double"/>
+            <Option value="-1e+09" name="Min" type="double"/>
+            <Option value="2" name="Precision" type="int"/>
+            <Option value="1" name="Step" type="int"/>
+            <Option value="SpinBox" name="Style" type="QString"/>
           </Option>
         </config>
       </editWidget>
@@ -577,12 +636,12 @@
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option value="true" type="bool" name="AllowNull"/>
-            <Option value="1e+09" type="double" name="Max"/>
-            <Option value="-1e+09" type="double" name="Min"/>
-            <Option value="2" type="int" name="Precision"/>
-            <Option value="1" type="int" name="Step"/>
-            <Option value="SpinBox" type="QString" name="Style"/>
+            <Option value="true" name="AllowNull" type="bool"/>
+            <Option value="1e+09" name="Max" type="double"/>
+            <Option value="-1e+09" name="Min" type="double"/>
+            <Option value="2" name="Precision" type="int"/>
+            <Option value="1" name="Step" type="int"/>
+            <Option value="SpinBox" name="Style" type="QString"/>
           </Option>
         </config>
       </editWidget>
@@ -591,8 +650,8 @@
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option value="false" type="bool" name="IsMultiline"/>
-            <Option value="false" type="bool" name="UseHtml"/>
+            <Option value="false" name="IsMultiline" type="bool"/>
+            <Option value="false" name="UseHtml" type="bool"/>
           </Option>
         </config>
       </editWidget>
@@ -608,8 +667,8 @@
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option value="false" type="bool" name="IsMultiline"/>
-            <Option value="false" type="bool" name="UseHtml"/>
+            <Option value="false" name="IsMultiline" type="bool"/>
+            <Option value="false" name="UseHtml" type="bool"/>
           </Option>
         </config>
       </editWidget>
@@ -618,12 +677,12 @@
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option value="true" type="bool" name="AllowNull"/>
-            <Option value="1e+09" type="double" name="Max"/>
-            <Option value="-1e+09" type="double" name="Min"/>
-            <Option value="2" type="int" name="Precision"/>
-            <Option value="1" type="int" name="Step"/>
-            <Option value="SpinBox" type="QString" name="Style"/>
+            <Option value="true" name="AllowNull" type="bool"/>
+            <Option value="1e+09" name="Max" type="double"/>
+            <Option value="-1e+09" name="Min" type="double"/>
+            <Option value="2" name="Precision" type="int"/>
+            <Option value="1" name="Step" type="int"/>
+            <Option value="SpinBox" name="Style" type="QString"/>
           </Option>
         </config>
       </editWidget>
@@ -632,8 +691,8 @@
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option value="false" type="bool" name="IsMultiline"/>
-            <Option value="false" type="bool" name="UseHtml"/>
+            <Option value="false" name="IsMultiline" type="bool"/>
+            <Option value="false" name="UseHtml" type="bool"/>
           </Option>
         </config>
       </editWidget>
@@ -642,12 +701,12 @@
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option value="true" type="bool" name="AllowNull"/>
-            <Option value="1e+09" type="double" name="Max"/>
-            <Option value="-1e+09" type="double" name="Min"/>
-            <Option value="2" type="int" name="Precision"/>
-            <Option value="1" type="int" name="Step"/>
-            <Option value="SpinBox" type="QString" name="Style"/>
+            <Option value="true" name="AllowNull" type="bool"/>
+            <Option value="1e+09" name="Max" type="double"/>
+            <Option value="-1e+09" name="Min" type="double"/>
+            <Option value="2" name="Precision" type="int"/>
+            <Option value="1" name="Step" type="int"/>
+            <Option value="SpinBox" name="Style" type="QString"/>
           </Option>
         </config>
       </editWidget>
@@ -656,8 +715,8 @@
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option value="false" type="bool" name="IsMultiline"/>
-            <Option value="false" type="bool" name="UseHtml"/>
+            <Option value="false" name="IsMultiline" type="bool"/>
+            <Option value="false" name="UseHtml" type="bool"/>
           </Option>
         </config>
       </editWidget>
@@ -666,8 +725,8 @@
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option value="false" type="bool" name="IsMultiline"/>
-            <Option value="false" type="bool" name="UseHtml"/>
+            <Option value="false" name="IsMultiline" type="bool"/>
+            <Option value="false" name="UseHtml" type="bool"/>
           </Option>
         </config>
       </editWidget>
@@ -676,8 +735,8 @@
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option value="false" type="bool" name="IsMultiline"/>
-            <Option value="false" type="bool" name="UseHtml"/>
+            <Option value="false" name="IsMultiline" type="bool"/>
+            <Option value="false" name="UseHtml" type="bool"/>
           </Option>
         </config>
       </editWidget>
@@ -686,8 +745,8 @@
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option value="false" type="bool" name="IsMultiline"/>
-            <Option value="false" type="bool" name="UseHtml"/>
+            <Option value="false" name="IsMultiline" type="bool"/>
+            <Option value="false" name="UseHtml" type="bool"/>
           </Option>
         </config>
       </editWidget>
@@ -696,8 +755,8 @@
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option value="false" type="bool" name="IsMultiline"/>
-            <Option value="false" type="bool" name="UseHtml"/>
+            <Option value="false" name="IsMultiline" type="bool"/>
+            <Option value="false" name="UseHtml" type="bool"/>
           </Option>
         </config>
       </editWidget>
@@ -706,185 +765,185 @@
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option value="false" type="bool" name="IsMultiline"/>
-            <Option value="false" type="bool" name="UseHtml"/>
+            <Option value="false" name="IsMultiline" type="bool"/>
+            <Option value="false" name="UseHtml" type="bool"/>
           </Option>
         </config>
       </editWidget>
     </field>
   </fieldConfiguration>
   <aliases>
-    <alias index="0" field="anomaly_id" name="Suspect id"/>
-    <alias index="1" field="x" name="Easting (m, survey UTM)"/>
-    <alias index="2" field="y" name="Northing (m, survey UTM)"/>
-    <alias index="3" field="lat" name="Latitude (°, WGS84)"/>
-    <alias index="4" field="lon" name="Longitude (°, WGS84)"/>
-    <alias index="5" field="area_m2" name="Area (m²)"/>
-    <alias index="6" field="diameter_m" name="Diameter (m)"/>
-    <alias index="7" field="circularity" name="Circularity (0-1)"/>
-    <alias index="8" field="depth_m" name="Burial depth (m)"/>
-    <alias index="9" field="depth_sigma_m" name="Depth uncertainty, 1σ (m)"/>
-    <alias index="10" field="diffusivity_m2s" name="Thermal diffusivity (m²/s)"/>
-    <alias index="11" field="diffusivity_sigma_m2s" name="Diffusivity uncertainty, 1σ (m²/s)"/>
-    <alias index="12" field="status" name="Characterisation status"/>
-    <alias index="13" field="polarity" name="Polarity"/>
-    <alias index="14" field="class_cue" name="Class cue"/>
-    <alias index="15" field="confidence" name="Class cue confidence (0-1)"/>
-    <alias index="16" field="n_scans" name="Scans seen"/>
-    <alias index="17" field="contrast_day_k" name="Day contrast (K)"/>
-    <alias index="18" field="contrast_night_k" name="Night contrast (K)"/>
-    <alias index="19" field="fix_quality" name="GNSS fix quality"/>
-    <alias index="20" field="figure" name="Contrast curve"/>
-    <alias index="21" field="contrast_series" name="Contrast series (JSON)"/>
-    <alias index="22" field="p_mine" name="Mine likelihood (0-1)"/>
-    <alias index="23" field="priority" name="Priority (1 = first)"/>
-    <alias index="24" field="cue_confidence" name="Class cue confidence (0-1)"/>
-    <alias index="25" field="set_aside_reason" name="Set aside because"/>
-    <alias index="26" field="short_id" name="Short id"/>
-    <alias index="27" field="depth" name="Burial depth ± 1σ"/>
-    <alias index="28" field="diffusivity" name="Thermal diffusivity ± 1σ"/>
-    <alias index="29" field="likelihood" name="Mine likelihood"/>
-    <alias index="30" field="cue_confidence_pct" name="Class cue confidence"/>
+    <alias field="anomaly_id" name="Suspect id" index="0"/>
+    <alias field="x" name="Easting (m, survey UTM)" index="1"/>
+    <alias field="y" name="Northing (m, survey UTM)" index="2"/>
+    <alias field="lat" name="Latitude (°, WGS84)" index="3"/>
+    <alias field="lon" name="Longitude (°, WGS84)" index="4"/>
+    <alias field="area_m2" name="Area (m²)" index="5"/>
+    <alias field="diameter_m" name="Diameter (m)" index="6"/>
+    <alias field="circularity" name="Circularity (0-1)" index="7"/>
+    <alias field="depth_m" name="Burial depth (m)" index="8"/>
+    <alias field="depth_sigma_m" name="Depth uncertainty, 1σ (m)" index="9"/>
+    <alias field="diffusivity_m2s" name="Thermal diffusivity (m²/s)" index="10"/>
+    <alias field="diffusivity_sigma_m2s" name="Diffusivity uncertainty, 1σ (m²/s)" index="11"/>
+    <alias field="status" name="Characterisation status" index="12"/>
+    <alias field="polarity" name="Polarity" index="13"/>
+    <alias field="class_cue" name="Class cue" index="14"/>
+    <alias field="confidence" name="Class cue confidence (0-1)" index="15"/>
+    <alias field="n_scans" name="Scans seen" index="16"/>
+    <alias field="contrast_day_k" name="Day contrast (K)" index="17"/>
+    <alias field="contrast_night_k" name="Night contrast (K)" index="18"/>
+    <alias field="fix_quality" name="GNSS fix quality" index="19"/>
+    <alias field="figure" name="Contrast curve" index="20"/>
+    <alias field="contrast_series" name="Contrast series (JSON)" index="21"/>
+    <alias field="p_mine" name="Mine likelihood (0-1)" index="22"/>
+    <alias field="priority" name="Priority (1 = first)" index="23"/>
+    <alias field="cue_confidence" name="Class cue confidence (0-1)" index="24"/>
+    <alias field="set_aside_reason" name="Set aside because" index="25"/>
+    <alias field="short_id" name="Short id" index="26"/>
+    <alias field="depth" name="Burial depth ± 1σ" index="27"/>
+    <alias field="diffusivity" name="Thermal diffusivity ± 1σ" index="28"/>
+    <alias field="likelihood" name="Mine likelihood" index="29"/>
+    <alias field="cue_confidence_pct" name="Class cue confidence" index="30"/>
   </aliases>
   <defaults>
-    <default field="anomaly_id" expression="" applyOnUpdate="0"/>
-    <default field="x" expression="" applyOnUpdate="0"/>
-    <default field="y" expression="" applyOnUpdate="0"/>
-    <default field="lat" expression="" applyOnUpdate="0"/>
-    <default field="lon" expression="" applyOnUpdate="0"/>
-    <default field="area_m2" expression="" applyOnUpdate="0"/>
-    <default field="diameter_m" expression="" applyOnUpdate="0"/>
-    <default field="circularity" expression="" applyOnUpdate="0"/>
-    <default field="depth_m" expression="" applyOnUpdate="0"/>
-    <default field="depth_sigma_m" expression="" applyOnUpdate="0"/>
-    <default field="diffusivity_m2s" expression="" applyOnUpdate="0"/>
-    <default field="diffusivity_sigma_m2s" expression="" applyOnUpdate="0"/>
-    <default field="status" expression="" applyOnUpdate="0"/>
-    <default field="polarity" expression="" applyOnUpdate="0"/>
-    <default field="class_cue" expression="" applyOnUpdate="0"/>
-    <default field="confidence" expression="" applyOnUpdate="0"/>
-    <default field="n_scans" expression="" applyOnUpdate="0"/>
-    <default field="contrast_day_k" expression="" applyOnUpdate="0"/>
-    <default field="contrast_night_k" expression="" applyOnUpdate="0"/>
-    <default field="fix_quality" expression="" applyOnUpdate="0"/>
-    <default field="figure" expression="" applyOnUpdate="0"/>
-    <default field="contrast_series" expression="" applyOnUpdate="0"/>
-    <default field="p_mine" expression="" applyOnUpdate="0"/>
-    <default field="priority" expression="" applyOnUpdate="0"/>
-    <default field="cue_confidence" expression="" applyOnUpdate="0"/>
-    <default field="set_aside_reason" expression="" applyOnUpdate="0"/>
-    <default field="short_id" expression="" applyOnUpdate="0"/>
-    <default field="depth" expression="" applyOnUpdate="0"/>
-    <default field="diffusivity" expression="" applyOnUpdate="0"/>
-    <default field="likelihood" expression="" applyOnUpdate="0"/>
-    <default field="cue_confidence_pct" expression="" applyOnUpdate="0"/>
+    <default applyOnUpdate="0" field="anomaly_id" expression=""/>
+    <default applyOnUpdate="0" field="x" expression=""/>
+    <default applyOnUpdate="0" field="y" expression=""/>
+    <default applyOnUpdate="0" field="lat" expression=""/>
+    <default applyOnUpdate="0" field="lon" expression=""/>
+    <default applyOnUpdate="0" field="area_m2" expression=""/>
+    <default applyOnUpdate="0" field="diameter_m" expression=""/>
+    <default applyOnUpdate="0" field="circularity" expression=""/>
+    <default applyOnUpdate="0" field="depth_m" expression=""/>
+    <default applyOnUpdate="0" field="depth_sigma_m" expression=""/>
+    <default applyOnUpdate="0" field="diffusivity_m2s" expression=""/>
+    <default applyOnUpdate="0" field="diffusivity_sigma_m2s" expression=""/>
+    <default applyOnUpdate="0" field="status" expression=""/>
+    <default applyOnUpdate="0" field="polarity" expression=""/>
+    <default applyOnUpdate="0" field="class_cue" expression=""/>
+    <default applyOnUpdate="0" field="confidence" expression=""/>
+    <default applyOnUpdate="0" field="n_scans" expression=""/>
+    <default applyOnUpdate="0" field="contrast_day_k" expression=""/>
+    <default applyOnUpdate="0" field="contrast_night_k" expression=""/>
+    <default applyOnUpdate="0" field="fix_quality" expression=""/>
+    <default applyOnUpdate="0" field="figure" expression=""/>
+    <default applyOnUpdate="0" field="contrast_series" expression=""/>
+    <default applyOnUpdate="0" field="p_mine" expression=""/>
+    <default applyOnUpdate="0" field="priority" expression=""/>
+    <default applyOnUpdate="0" field="cue_confidence" expression=""/>
+    <default applyOnUpdate="0" field="set_aside_reason" expression=""/>
+    <default applyOnUpdate="0" field="short_id" expression=""/>
+    <default applyOnUpdate="0" field="depth" expression=""/>
+    <default applyOnUpdate="0" field="diffusivity" expression=""/>
+    <default applyOnUpdate="0" field="likelihood" expression=""/>
+    <default applyOnUpdate="0" field="cue_confidence_pct" expression=""/>
   </defaults>
   <constraints>
-    <constraint constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0" field="anomaly_id"/>
-    <constraint constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0" field="x"/>
-    <constraint constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0" field="y"/>
-    <constraint constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0" field="lat"/>
-    <constraint constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0" field="lon"/>
-    <constraint constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0" field="area_m2"/>
-    <constraint constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0" field="diameter_m"/>
-    <constraint constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0" field="circularity"/>
-    <constraint constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0" field="depth_m"/>
-    <constraint constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0" field="depth_sigma_m"/>
-    <constraint constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0" field="diffusivity_m2s"/>
-    <constraint constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0" field="diffusivity_sigma_m2s"/>
-    <constraint constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0" field="status"/>
-    <constraint constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0" field="polarity"/>
-    <constraint constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0" field="class_cue"/>
-    <constraint constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0" field="confidence"/>
-    <constraint constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0" field="n_scans"/>
-    <constraint constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0" field="contrast_day_k"/>
-    <constraint constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0" field="contrast_night_k"/>
-    <constraint constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0" field="fix_quality"/>
-    <constraint constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0" field="figure"/>
-    <constraint constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0" field="contrast_series"/>
-    <constraint constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0" field="p_mine"/>
-    <constraint constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0" field="priority"/>
-    <constraint constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0" field="cue_confidence"/>
-    <constraint constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0" field="set_aside_reason"/>
-    <constraint constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0" field="short_id"/>
-    <constraint constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0" field="depth"/>
-    <constraint constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0" field="diffusivity"/>
-    <constraint constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0" field="likelihood"/>
-    <constraint constraints="0" unique_strength="0" notnull_strength="0" exp_strength="0" field="cue_confidence_pct"/>
+    <constraint unique_strength="0" field="anomaly_id" constraints="0" notnull_strength="0" exp_strength="0"/>
+    <constraint unique_strength="0" field="x" constraints="0" notnull_strength="0" exp_strength="0"/>
+    <constraint unique_strength="0" field="y" constraints="0" notnull_strength="0" exp_strength="0"/>
+    <constraint unique_strength="0" field="lat" constraints="0" notnull_strength="0" exp_strength="0"/>
+    <constraint unique_strength="0" field="lon" constraints="0" notnull_strength="0" exp_strength="0"/>
+    <constraint unique_strength="0" field="area_m2" constraints="0" notnull_strength="0" exp_strength="0"/>
+    <constraint unique_strength="0" field="diameter_m" constraints="0" notnull_strength="0" exp_strength="0"/>
+    <constraint unique_strength="0" field="circularity" constraints="0" notnull_strength="0" exp_strength="0"/>
+    <constraint unique_strength="0" field="depth_m" constraints="0" notnull_strength="0" exp_strength="0"/>
+    <constraint unique_strength="0" field="depth_sigma_m" constraints="0" notnull_strength="0" exp_strength="0"/>
+    <constraint unique_strength="0" field="diffusivity_m2s" constraints="0" notnull_strength="0" exp_strength="0"/>
+    <constraint unique_strength="0" field="diffusivity_sigma_m2s" constraints="0" notnull_strength="0" exp_strength="0"/>
+    <constraint unique_strength="0" field="status" constraints="0" notnull_strength="0" exp_strength="0"/>
+    <constraint unique_strength="0" field="polarity" constraints="0" notnull_strength="0" exp_strength="0"/>
+    <constraint unique_strength="0" field="class_cue" constraints="0" notnull_strength="0" exp_strength="0"/>
+    <constraint unique_strength="0" field="confidence" constraints="0" notnull_strength="0" exp_strength="0"/>
+    <constraint unique_strength="0" field="n_scans" constraints="0" notnull_strength="0" exp_strength="0"/>
+    <constraint unique_strength="0" field="contrast_day_k" constraints="0" notnull_strength="0" exp_strength="0"/>
+    <constraint unique_strength="0" field="contrast_night_k" constraints="0" notnull_strength="0" exp_strength="0"/>
+    <constraint unique_strength="0" field="fix_quality" constraints="0" notnull_strength="0" exp_strength="0"/>
+    <constraint unique_strength="0" field="figure" constraints="0" notnull_strength="0" exp_strength="0"/>
+    <constraint unique_strength="0" field="contrast_series" constraints="0" notnull_strength="0" exp_strength="0"/>
+    <constraint unique_strength="0" field="p_mine" constraints="0" notnull_strength="0" exp_strength="0"/>
+    <constraint unique_strength="0" field="priority" constraints="0" notnull_strength="0" exp_strength="0"/>
+    <constraint unique_strength="0" field="cue_confidence" constraints="0" notnull_strength="0" exp_strength="0"/>
+    <constraint unique_strength="0" field="set_aside_reason" constraints="0" notnull_strength="0" exp_strength="0"/>
+    <constraint unique_strength="0" field="short_id" constraints="0" notnull_strength="0" exp_strength="0"/>
+    <constraint unique_strength="0" field="depth" constraints="0" notnull_strength="0" exp_strength="0"/>
+    <constraint unique_strength="0" field="diffusivity" constraints="0" notnull_strength="0" exp_strength="0"/>
+    <constraint unique_strength="0" field="likelihood" constraints="0" notnull_strength="0" exp_strength="0"/>
+    <constraint unique_strength="0" field="cue_confidence_pct" constraints="0" notnull_strength="0" exp_strength="0"/>
   </constraints>
   <constraintExpressions>
-    <constraint desc="" field="anomaly_id" exp=""/>
-    <constraint desc="" field="x" exp=""/>
-    <constraint desc="" field="y" exp=""/>
-    <constraint desc="" field="lat" exp=""/>
-    <constraint desc="" field="lon" exp=""/>
-    <constraint desc="" field="area_m2" exp=""/>
-    <constraint desc="" field="diameter_m" exp=""/>
-    <constraint desc="" field="circularity" exp=""/>
-    <constraint desc="" field="depth_m" exp=""/>
-    <constraint desc="" field="depth_sigma_m" exp=""/>
-    <constraint desc="" field="diffusivity_m2s" exp=""/>
-    <constraint desc="" field="diffusivity_sigma_m2s" exp=""/>
-    <constraint desc="" field="status" exp=""/>
-    <constraint desc="" field="polarity" exp=""/>
-    <constraint desc="" field="class_cue" exp=""/>
-    <constraint desc="" field="confidence" exp=""/>
-    <constraint desc="" field="n_scans" exp=""/>
-    <constraint desc="" field="contrast_day_k" exp=""/>
-    <constraint desc="" field="contrast_night_k" exp=""/>
-    <constraint desc="" field="fix_quality" exp=""/>
-    <constraint desc="" field="figure" exp=""/>
-    <constraint desc="" field="contrast_series" exp=""/>
-    <constraint desc="" field="p_mine" exp=""/>
-    <constraint desc="" field="priority" exp=""/>
-    <constraint desc="" field="cue_confidence" exp=""/>
-    <constraint desc="" field="set_aside_reason" exp=""/>
-    <constraint desc="" field="short_id" exp=""/>
-    <constraint desc="" field="depth" exp=""/>
-    <constraint desc="" field="diffusivity" exp=""/>
-    <constraint desc="" field="likelihood" exp=""/>
-    <constraint desc="" field="cue_confidence_pct" exp=""/>
+    <constraint exp="" desc="" field="anomaly_id"/>
+    <constraint exp="" desc="" field="x"/>
+    <constraint exp="" desc="" field="y"/>
+    <constraint exp="" desc="" field="lat"/>
+    <constraint exp="" desc="" field="lon"/>
+    <constraint exp="" desc="" field="area_m2"/>
+    <constraint exp="" desc="" field="diameter_m"/>
+    <constraint exp="" desc="" field="circularity"/>
+    <constraint exp="" desc="" field="depth_m"/>
+    <constraint exp="" desc="" field="depth_sigma_m"/>
+    <constraint exp="" desc="" field="diffusivity_m2s"/>
+    <constraint exp="" desc="" field="diffusivity_sigma_m2s"/>
+    <constraint exp="" desc="" field="status"/>
+    <constraint exp="" desc="" field="polarity"/>
+    <constraint exp="" desc="" field="class_cue"/>
+    <constraint exp="" desc="" field="confidence"/>
+    <constraint exp="" desc="" field="n_scans"/>
+    <constraint exp="" desc="" field="contrast_day_k"/>
+    <constraint exp="" desc="" field="contrast_night_k"/>
+    <constraint exp="" desc="" field="fix_quality"/>
+    <constraint exp="" desc="" field="figure"/>
+    <constraint exp="" desc="" field="contrast_series"/>
+    <constraint exp="" desc="" field="p_mine"/>
+    <constraint exp="" desc="" field="priority"/>
+    <constraint exp="" desc="" field="cue_confidence"/>
+    <constraint exp="" desc="" field="set_aside_reason"/>
+    <constraint exp="" desc="" field="short_id"/>
+    <constraint exp="" desc="" field="depth"/>
+    <constraint exp="" desc="" field="diffusivity"/>
+    <constraint exp="" desc="" field="likelihood"/>
+    <constraint exp="" desc="" field="cue_confidence_pct"/>
   </constraintExpressions>
   <expressionfields>
-    <field typeName="" expression="'S-' || lpad(to_string(to_int(regexp_substr(&quot;anomaly_id&quot;, '(\\d+)$'))), 3, '0')" subType="0" name="short_id" length="0" type="10" precision="0" comment=""/>
-    <field typeName="" expression="CASE WHEN &quot;depth_m&quot; * 100 IS NULL THEN 'not characterised' WHEN &quot;depth_sigma_m&quot; * 100 IS NULL THEN format_number(&quot;depth_m&quot; * 100, 1) || ' cm' ELSE format_number(&quot;depth_m&quot; * 100, 1) || ' ± ' || format_number(&quot;depth_sigma_m&quot; * 100, 1) || ' cm' END" subType="0" name="depth" length="0" type="10" precision="0" comment=""/>
-    <field typeName="" expression="CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 IS NULL THEN 'not characterised' WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 IS NULL THEN CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' mm²/s' ELSE CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' ± ' || CASE WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_sigma_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6))))) END || ' mm²/s' END" subType="0" name="diffusivity" length="0" type="10" precision="0" comment=""/>
-    <field typeName="" expression="CASE WHEN attribute('p_mine') IS NULL THEN 'not estimated' ELSE format_number(100 * attribute('p_mine'), 0) || ' %' END" subType="0" name="likelihood" length="0" type="10" precision="0" comment=""/>
-    <field typeName="" expression="CASE WHEN coalesce(attribute('cue_confidence'), attribute('confidence')) IS NULL THEN NULL ELSE format_number(100 * coalesce(attribute('cue_confidence'), attribute('confidence')), 0) || ' %' END" subType="0" name="cue_confidence_pct" length="0" type="10" precision="0" comment=""/>
+    <field comment="" typeName="" name="short_id" precision="0" expression="'S-' || lpad(to_string(to_int(regexp_substr(&quot;anomaly_id&quot;, '(\\d+)$'))), 3, '0')" subType="0" type="10" length="0"/>
+    <field comment="" typeName="" name="depth" precision="0" expression="CASE WHEN &quot;depth_m&quot; * 100 IS NULL THEN 'not characterised' WHEN &quot;depth_sigma_m&quot; * 100 IS NULL THEN format_number(&quot;depth_m&quot; * 100, 1) || ' cm' ELSE format_number(&quot;depth_m&quot; * 100, 1) || ' ± ' || format_number(&quot;depth_sigma_m&quot; * 100, 1) || ' cm' END" subType="0" type="10" length="0"/>
+    <field comment="" typeName="" name="diffusivity" precision="0" expression="CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 IS NULL THEN 'not characterised' WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 IS NULL THEN CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' mm²/s' ELSE CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' ± ' || CASE WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_sigma_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6))))) END || ' mm²/s' END" subType="0" type="10" length="0"/>
+    <field comment="" typeName="" name="likelihood" precision="0" expression="CASE WHEN attribute('p_mine') IS NULL THEN 'not estimated' ELSE format_number(100 * attribute('p_mine'), 0) || ' %' END" subType="0" type="10" length="0"/>
+    <field comment="" typeName="" name="cue_confidence_pct" precision="0" expression="CASE WHEN coalesce(attribute('cue_confidence'), attribute('confidence')) IS NULL THEN NULL ELSE format_number(100 * coalesce(attribute('cue_confidence'), attribute('confidence')), 0) || ' %' END" subType="0" type="10" length="0"/>
   </expressionfields>
-  <attributetableconfig actionWidgetStyle="dropDown" sortExpression="coalesce(attribute('priority'), 1000000 * (CASE WHEN &quot;class_cue&quot; = 'at_mine' THEN 0 WHEN &quot;class_cue&quot; = 'ap_mine' THEN 1 WHEN &quot;class_cue&quot; = 'unknown' THEN 2 ELSE 3 END) - round(1000 * max(abs(&quot;contrast_day_k&quot;), abs(&quot;contrast_night_k&quot;))))" sortOrder="0">
+  <attributetableconfig sortOrder="0" sortExpression="coalesce(attribute('priority'), 1000000 * (CASE WHEN &quot;class_cue&quot; = 'at_mine' THEN 0 WHEN &quot;class_cue&quot; = 'ap_mine' THEN 1 WHEN &quot;class_cue&quot; = 'unknown' THEN 2 ELSE 3 END) - round(1000 * max(abs(&quot;contrast_day_k&quot;), abs(&quot;contrast_night_k&quot;))))" actionWidgetStyle="dropDown">
     <columns>
-      <column width="-1" hidden="0" type="field" name="anomaly_id"/>
-      <column width="-1" hidden="0" type="field" name="x"/>
-      <column width="-1" hidden="0" type="field" name="y"/>
-      <column width="-1" hidden="0" type="field" name="lat"/>
-      <column width="-1" hidden="0" type="field" name="lon"/>
-      <column width="-1" hidden="0" type="field" name="area_m2"/>
-      <column width="-1" hidden="0" type="field" name="diameter_m"/>
-      <column width="-1" hidden="0" type="field" name="circularity"/>
-      <column width="-1" hidden="0" type="field" name="depth_m"/>
-      <column width="-1" hidden="0" type="field" name="depth_sigma_m"/>
-      <column width="-1" hidden="0" type="field" name="diffusivity_m2s"/>
-      <column width="-1" hidden="0" type="field" name="diffusivity_sigma_m2s"/>
-      <column width="-1" hidden="0" type="field" name="status"/>
-      <column width="-1" hidden="0" type="field" name="polarity"/>
-      <column width="-1" hidden="0" type="field" name="class_cue"/>
-      <column width="-1" hidden="0" type="field" name="confidence"/>
-      <column width="-1" hidden="0" type="field" name="n_scans"/>
-      <column width="-1" hidden="0" type="field" name="contrast_day_k"/>
-      <column width="-1" hidden="0" type="field" name="contrast_night_k"/>
-      <column width="-1" hidden="0" type="field" name="fix_quality"/>
-      <column width="-1" hidden="0" type="field" name="figure"/>
-      <column width="-1" hidden="0" type="field" name="contrast_series"/>
-      <column width="-1" hidden="0" type="field" name="p_mine"/>
-      <column width="-1" hidden="0" type="field" name="priority"/>
-      <column width="-1" hidden="0" type="field" name="cue_confidence"/>
-      <column width="-1" hidden="0" type="field" name="set_aside_reason"/>
-      <column width="-1" hidden="0" type="field" name="short_id"/>
-      <column width="-1" hidden="0" type="field" name="depth"/>
-      <column width="-1" hidden="0" type="field" name="diffusivity"/>
-      <column width="-1" hidden="0" type="field" name="likelihood"/>
-      <column width="-1" hidden="0" type="field" name="cue_confidence_pct"/>
+      <column width="-1" hidden="0" name="anomaly_id" type="field"/>
+      <column width="-1" hidden="0" name="x" type="field"/>
+      <column width="-1" hidden="0" name="y" type="field"/>
+      <column width="-1" hidden="0" name="lat" type="field"/>
+      <column width="-1" hidden="0" name="lon" type="field"/>
+      <column width="-1" hidden="0" name="area_m2" type="field"/>
+      <column width="-1" hidden="0" name="diameter_m" type="field"/>
+      <column width="-1" hidden="0" name="circularity" type="field"/>
+      <column width="-1" hidden="0" name="depth_m" type="field"/>
+      <column width="-1" hidden="0" name="depth_sigma_m" type="field"/>
+      <column width="-1" hidden="0" name="diffusivity_m2s" type="field"/>
+      <column width="-1" hidden="0" name="diffusivity_sigma_m2s" type="field"/>
+      <column width="-1" hidden="0" name="status" type="field"/>
+      <column width="-1" hidden="0" name="polarity" type="field"/>
+      <column width="-1" hidden="0" name="class_cue" type="field"/>
+      <column width="-1" hidden="0" name="confidence" type="field"/>
+      <column width="-1" hidden="0" name="n_scans" type="field"/>
+      <column width="-1" hidden="0" name="contrast_day_k" type="field"/>
+      <column width="-1" hidden="0" name="contrast_night_k" type="field"/>
+      <column width="-1" hidden="0" name="fix_quality" type="field"/>
+      <column width="-1" hidden="0" name="figure" type="field"/>
+      <column width="-1" hidden="0" name="contrast_series" type="field"/>
+      <column width="-1" hidden="0" name="p_mine" type="field"/>
+      <column width="-1" hidden="0" name="priority" type="field"/>
+      <column width="-1" hidden="0" name="cue_confidence" type="field"/>
+      <column width="-1" hidden="0" name="set_aside_reason" type="field"/>
+      <column width="-1" hidden="0" name="short_id" type="field"/>
+      <column width="-1" hidden="0" name="depth" type="field"/>
+      <column width="-1" hidden="0" name="diffusivity" type="field"/>
+      <column width="-1" hidden="0" name="likelihood" type="field"/>
+      <column width="-1" hidden="0" name="cue_confidence_pct" type="field"/>
       <column width="-1" hidden="1" type="actions"/>
     </columns>
   </attributetableconfig>
@@ -901,57 +960,57 @@
   <featformsuppress>0</featformsuppress>
   <editorlayout>tablayout</editorlayout>
   <attributeEditorForm>
-    <attributeEditorContainer showLabel="1" visibilityExpressionEnabled="0" name="Suspect" groupBox="0" columnCount="1" visibilityExpression="">
-      <attributeEditorContainer showLabel="1" visibilityExpressionEnabled="0" name="Identification" groupBox="1" columnCount="1" visibilityExpression="">
-        <attributeEditorField showLabel="1" index="26" name="short_id"/>
-        <attributeEditorField showLabel="1" index="0" name="anomaly_id"/>
-        <attributeEditorField showLabel="1" index="23" name="priority"/>
-        <attributeEditorField showLabel="1" index="14" name="class_cue"/>
-        <attributeEditorField showLabel="1" index="29" name="likelihood"/>
-        <attributeEditorField showLabel="1" index="30" name="cue_confidence_pct"/>
-        <attributeEditorField showLabel="1" index="12" name="status"/>
-        <attributeEditorField showLabel="1" index="13" name="polarity"/>
-        <attributeEditorField showLabel="1" index="25" name="set_aside_reason"/>
+    <attributeEditorContainer name="Suspect" visibilityExpression="" groupBox="0" columnCount="1" showLabel="1" visibilityExpressionEnabled="0">
+      <attributeEditorContainer name="Identification" visibilityExpression="" groupBox="1" columnCount="1" showLabel="1" visibilityExpressionEnabled="0">
+        <attributeEditorField name="short_id" index="26" showLabel="1"/>
+        <attributeEditorField name="anomaly_id" index="0" showLabel="1"/>
+        <attributeEditorField name="priority" index="23" showLabel="1"/>
+        <attributeEditorField name="class_cue" index="14" showLabel="1"/>
+        <attributeEditorField name="likelihood" index="29" showLabel="1"/>
+        <attributeEditorField name="cue_confidence_pct" index="30" showLabel="1"/>
+        <attributeEditorField name="status" index="12" showLabel="1"/>
+        <attributeEditorField name="polarity" index="13" showLabel="1"/>
+        <attributeEditorField name="set_aside_reason" index="25" showLabel="1"/>
       </attributeEditorContainer>
-      <attributeEditorContainer showLabel="1" visibilityExpressionEnabled="0" name="Burial depth and soil" groupBox="1" columnCount="1" visibilityExpression="">
-        <attributeEditorField showLabel="1" index="27" name="depth"/>
-        <attributeEditorField showLabel="1" index="28" name="diffusivity"/>
+      <attributeEditorContainer name="Burial depth and soil" visibilityExpression="" groupBox="1" columnCount="1" showLabel="1" visibilityExpressionEnabled="0">
+        <attributeEditorField name="depth" index="27" showLabel="1"/>
+        <attributeEditorField name="diffusivity" index="28" showLabel="1"/>
       </attributeEditorContainer>
-      <attributeEditorContainer showLabel="1" visibilityExpressionEnabled="0" name="Thermal contrast" groupBox="1" columnCount="1" visibilityExpression="">
-        <attributeEditorField showLabel="1" index="17" name="contrast_day_k"/>
-        <attributeEditorField showLabel="1" index="18" name="contrast_night_k"/>
-        <attributeEditorField showLabel="1" index="16" name="n_scans"/>
+      <attributeEditorContainer name="Thermal contrast" visibilityExpression="" groupBox="1" columnCount="1" showLabel="1" visibilityExpressionEnabled="0">
+        <attributeEditorField name="contrast_day_k" index="17" showLabel="1"/>
+        <attributeEditorField name="contrast_night_k" index="18" showLabel="1"/>
+        <attributeEditorField name="n_scans" index="16" showLabel="1"/>
       </attributeEditorContainer>
-      <attributeEditorContainer showLabel="1" visibilityExpressionEnabled="0" name="Shape" groupBox="1" columnCount="1" visibilityExpression="">
-        <attributeEditorField showLabel="1" index="6" name="diameter_m"/>
-        <attributeEditorField showLabel="1" index="5" name="area_m2"/>
-        <attributeEditorField showLabel="1" index="7" name="circularity"/>
-      </attributeEditorContainer>
-    </attributeEditorContainer>
-    <attributeEditorContainer showLabel="1" visibilityExpressionEnabled="0" name="Contrast curve" groupBox="0" columnCount="1" visibilityExpression="">
-      <attributeEditorContainer showLabel="1" visibilityExpressionEnabled="0" name="Contrast curve" groupBox="1" columnCount="1" visibilityExpression="">
-        <attributeEditorField showLabel="1" index="20" name="figure"/>
+      <attributeEditorContainer name="Shape" visibilityExpression="" groupBox="1" columnCount="1" showLabel="1" visibilityExpressionEnabled="0">
+        <attributeEditorField name="diameter_m" index="6" showLabel="1"/>
+        <attributeEditorField name="area_m2" index="5" showLabel="1"/>
+        <attributeEditorField name="circularity" index="7" showLabel="1"/>
       </attributeEditorContainer>
     </attributeEditorContainer>
-    <attributeEditorContainer showLabel="1" visibilityExpressionEnabled="0" name="Position" groupBox="0" columnCount="1" visibilityExpression="">
-      <attributeEditorContainer showLabel="1" visibilityExpressionEnabled="0" name="Position" groupBox="1" columnCount="1" visibilityExpression="">
-        <attributeEditorField showLabel="1" index="1" name="x"/>
-        <attributeEditorField showLabel="1" index="2" name="y"/>
-        <attributeEditorField showLabel="1" index="3" name="lat"/>
-        <attributeEditorField showLabel="1" index="4" name="lon"/>
-        <attributeEditorField showLabel="1" index="19" name="fix_quality"/>
+    <attributeEditorContainer name="Contrast curve" visibilityExpression="" groupBox="0" columnCount="1" showLabel="1" visibilityExpressionEnabled="0">
+      <attributeEditorContainer name="Contrast curve" visibilityExpression="" groupBox="1" columnCount="1" showLabel="1" visibilityExpressionEnabled="0">
+        <attributeEditorField name="figure" index="20" showLabel="1"/>
       </attributeEditorContainer>
     </attributeEditorContainer>
-    <attributeEditorContainer showLabel="1" visibilityExpressionEnabled="0" name="Stored values" groupBox="0" columnCount="1" visibilityExpression="">
-      <attributeEditorContainer showLabel="1" visibilityExpressionEnabled="0" name="Stored values" groupBox="1" columnCount="1" visibilityExpression="">
-        <attributeEditorField showLabel="1" index="8" name="depth_m"/>
-        <attributeEditorField showLabel="1" index="9" name="depth_sigma_m"/>
-        <attributeEditorField showLabel="1" index="10" name="diffusivity_m2s"/>
-        <attributeEditorField showLabel="1" index="11" name="diffusivity_sigma_m2s"/>
-        <attributeEditorField showLabel="1" index="22" name="p_mine"/>
-        <attributeEditorField showLabel="1" index="24" name="cue_confidence"/>
-        <attributeEditorField showLabel="1" index="15" name="confidence"/>
-        <attributeEditorField showLabel="1" index="21" name="contrast_series"/>
+    <attributeEditorContainer name="Position" visibilityExpression="" groupBox="0" columnCount="1" showLabel="1" visibilityExpressionEnabled="0">
+      <attributeEditorContainer name="Position" visibilityExpression="" groupBox="1" columnCount="1" showLabel="1" visibilityExpressionEnabled="0">
+        <attributeEditorField name="x" index="1" showLabel="1"/>
+        <attributeEditorField name="y" index="2" showLabel="1"/>
+        <attributeEditorField name="lat" index="3" showLabel="1"/>
+        <attributeEditorField name="lon" index="4" showLabel="1"/>
+        <attributeEditorField name="fix_quality" index="19" showLabel="1"/>
+      </attributeEditorContainer>
+    </attributeEditorContainer>
+    <attributeEditorContainer name="Stored values" visibilityExpression="" groupBox="0" columnCount="1" showLabel="1" visibilityExpressionEnabled="0">
+      <attributeEditorContainer name="Stored values" visibilityExpression="" groupBox="1" columnCount="1" showLabel="1" visibilityExpressionEnabled="0">
+        <attributeEditorField name="depth_m" index="8" showLabel="1"/>
+        <attributeEditorField name="depth_sigma_m" index="9" showLabel="1"/>
+        <attributeEditorField name="diffusivity_m2s" index="10" showLabel="1"/>
+        <attributeEditorField name="diffusivity_sigma_m2s" index="11" showLabel="1"/>
+        <attributeEditorField name="p_mine" index="22" showLabel="1"/>
+        <attributeEditorField name="cue_confidence" index="24" showLabel="1"/>
+        <attributeEditorField name="confidence" index="15" showLabel="1"/>
+        <attributeEditorField name="contrast_series" index="21" showLabel="1"/>
       </attributeEditorContainer>
     </attributeEditorContainer>
   </attributeEditorForm>

@@ -236,7 +236,6 @@ _PARSED: dict[tuple, GnssLog] = {}
 """The last logs parsed (a survey's log is parsed by the validation, then by the chain)."""
 
 
-_PARSED: dict[tuple, GnssLog] = {}
 """The last logs parsed (a survey's log is parsed by the validation, then by the chain)."""
 
 #: an RMC or ZDA date farther than this from the survey's own start is refused (a receiver's
@@ -256,9 +255,8 @@ def parse_nmea(text: str, label: str = "gnss.nmea", fallback_date_s: float | Non
     What real receivers write is accepted (:mod:`clearfast_gis.survey.nmea_lines`): junk
     before a sentence, ``$$`` starts, CR-only line ends, one GGA per constellation per epoch
     (merged into one epoch keeping the best fix), void RMC (never used for dating), leap
-    seconds. The result of the same text and options is remembered (the last two logs), so
-    validating a survey and then processing it parses its 24 h log once; treat it as
-    read-only.
+    seconds. Validating a survey parses its logs once; the chain takes them from the
+    validation report (:attr:`clearfast_gis.survey.validate.ValidationReport.logs`).
 
     Parameters
     ----------
@@ -283,13 +281,7 @@ def parse_nmea(text: str, label: str = "gnss.nmea", fallback_date_s: float | Non
     """
     if checksums not in CHECKSUM_MODES:
         raise ValueError(f"checksums must be one of {CHECKSUM_MODES}, got {checksums!r}")
-    key = (len(text), hash(text), fallback_date_s, checksums)
-    if key not in _PARSED:
-        log = _parse_nmea(text, label, fallback_date_s, checksums)
-        while len(_PARSED) >= 2:
-            _PARSED.pop(next(iter(_PARSED)))
-        _PARSED[key] = log
-    return _PARSED[key]
+    return _parse_nmea(text, label, fallback_date_s, checksums)
 
 
 def gnss_checksums(manifest: dict) -> str:
@@ -333,7 +325,7 @@ def _no_epoch_cause(n_lines: int, n_sentences: int, binary: int,
 
 def _parse_nmea(text: str, label: str, fallback_date_s: float | None,
                 checksums: str) -> GnssLog:
-    """:func:`parse_nmea` without the memory of recent logs."""
+    """:func:`parse_nmea` once the checksum mode is checked."""
     known = fallback_date_s is not None and math.isfinite(fallback_date_s)
     pivot = datetime.fromtimestamp(fallback_date_s, tz=UTC).year if known else None
     records: list[tuple] = []  # (tod_s, kind, payload)

@@ -1,7 +1,13 @@
 """Complete check of a survey folder: every problem found, one line each, and a summary.
 
 :func:`validate_survey` never stops at the first problem and never raises for bad input; the
-processing chain, the QGIS plugin and ``clearfast validate`` share it.
+processing chain, the QGIS plugin and ``clearfast validate`` share it, and the chain takes the
+logs it parsed (:class:`ParsedLogs`).
+
+The module is a little over 500 lines because it is one concept walked in one pass: the
+folder's files in dependency order (manifest, mission, frames, blackbody frames, logs), each
+check needing what the earlier ones found; the per-file checks that stand alone are the
+helpers at its end.
 """
 
 from __future__ import annotations
@@ -44,6 +50,26 @@ class Problem:
         return ": ".join(p for p in (self.file, self.field, self.message) if p)
 
 
+@dataclass(frozen=True)
+class ParsedLogs:
+    """The survey's logs as validation parsed them, for the chain to use (each is parsed
+    once per run). None where a log is absent or could not be parsed (then the report holds
+    a problem).
+
+    Attributes
+    ----------
+    gnss : GnssLog or None
+    weather : WeatherLog or None
+    soil : SoilLog or None
+    markers : Markers or None
+    """
+
+    gnss: object = None
+    weather: object = None
+    soil: object = None
+    markers: object = None
+
+
 @dataclass
 class ValidationReport:
     """Result of :func:`validate_survey`.
@@ -57,11 +83,14 @@ class ValidationReport:
     summary : dict
         Counts and spans: frames, scans, positions, bands, time span, GNSS fix statistics,
         gaps, missing frames.
+    logs : ParsedLogs
+        The logs parsed on the way (not part of :meth:`to_dict`).
     """
 
     problems: list[Problem] = field(default_factory=list)
     warnings: list[Problem] = field(default_factory=list)
     summary: dict = field(default_factory=dict)
+    logs: ParsedLogs = field(default_factory=ParsedLogs, repr=False)
 
     @property
     def valid(self) -> bool:
@@ -170,6 +199,7 @@ def validate_survey(path: str | os.PathLike, gnss_gap_s: float = 10.0,
     root = Path(path)
     ck = _Checker(root)
     rep = ck.report
+    parsed: dict[str, object] = {}
     if not root.is_dir():
         ck.problem(str(root), "", "survey folder not found" if not root.exists()
                    else "expected a survey folder, got a file")
@@ -283,6 +313,7 @@ def validate_survey(path: str | os.PathLike, gnss_gap_s: float = 10.0,
         label = files["gnss"]
         with ck.guard(label):
             log = parse_nmea(gt, label, start_s, gnss_checksums(manifest))
+            parsed["gnss"] = log
             counts = log.fix_counts()
             n = len(log)
             n_fixed = counts.get(FIX_RTK_FIXED, 0)
@@ -331,6 +362,7 @@ def validate_survey(path: str | os.PathLike, gnss_gap_s: float = 10.0,
         with ck.guard(label):
             table = parse_weather_table(wt, label, profile)
             w = table.weather
+            parsed["weather"] = w
             summary["weather_records"] = len(w)
             summary["weather_columns"] = {q: f"{c.column} [{c.unit}]"
                                           for q, c in table.columns.items()}
@@ -357,6 +389,7 @@ def validate_survey(path: str | os.PathLike, gnss_gap_s: float = 10.0,
     if "soil" in files and (txt := ck.text(files["soil"], "soil")) is not None:
         with ck.guard(files["soil"]):
             soil = parse_soil_log(txt, files["soil"], profile)
+            parsed["soil"] = soil
             if soil.time_s.size == 0:
                 ck.problem(files["soil"], "", "no records")
             order(files["soil"], soil.time_s)
@@ -377,7 +410,9 @@ def validate_survey(path: str | os.PathLike, gnss_gap_s: float = 10.0,
                 coverage(files[key], lg.time_s, what)
     if "markers" in files and (mk := ck.text(files["markers"], "markers")) is not None:
         with ck.guard(files["markers"]):
-            summary["markers"] = len(parse_markers(mk, files["markers"]))
+            parsed["markers"] = parse_markers(mk, files["markers"])
+            summary["markers"] = len(parsed["markers"])
+    rep.logs = ParsedLogs(**parsed)
     return rep
 
 

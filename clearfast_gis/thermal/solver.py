@@ -237,9 +237,7 @@ def run(
     """
     args = (z_faces, r_faces, props, drive, dt_s, init_k, init_prev_k, surface_init_k,
             keep_states, keep_profiles)
-    if kernels.reference():
-        return _run_splu(*args)
-    return _run_band(*args)
+    return kernels.kernel("heat_equation")(*args)
 
 
 def _step_terms(cap: np.ndarray, ring: np.ndarray, k0: np.ndarray, top: np.ndarray,

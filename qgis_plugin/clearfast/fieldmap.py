@@ -55,8 +55,19 @@ LEGEND_H = 46.0
 MAX_TABLE_ROWS = 14
 """Rows of the mine-indication table on the page (the rest are counted below it)."""
 
-MINE_FILTER = "\"class_cue\" IN ('at_mine', 'ap_mine')"
-"""Mine indications: the filter of the suspects style's labelling rule."""
+CUE_FILTER = "\"class_cue\" IN ('at_mine', 'ap_mine')"
+"""Mine indications of a layer without the stored style (its labelling rule says otherwise)."""
+
+
+def mine_filter(layer) -> str:
+    """The filter of mine indications: that of the stored style's labelling rule (mine
+    likelihood or class cue, as the mine-action export selects them)."""
+    labeling = layer.labeling()
+    if labeling is not None and labeling.type() == "rule-based":
+        for rule in labeling.rootRule().children():
+            if rule.filterExpression():
+                return rule.filterExpression()
+    return CUE_FILTER
 
 DISCLAIMER = ("Indirect evidence. Each mark is a thermal anomaly from a stand-off thermal-IR "
               "survey: an indication for technical survey, not a confirmed mine. Ground without "
@@ -87,7 +98,7 @@ def mine_rows(layer) -> list:
     ctx = QgsExpressionContext(QgsExpressionContextUtils.globalProjectLayerScopes(layer))
     order = QgsExpression(layer.attributeTableConfig().sortExpression() or "\"anomaly_id\"")
     keyed = []
-    for f in layer.getFeatures(QgsFeatureRequest().setFilterExpression(MINE_FILTER)):
+    for f in layer.getFeatures(QgsFeatureRequest().setFilterExpression(mine_filter(layer))):
         ctx.setFeature(f)
         key = order.evaluate(ctx)
         keyed.append((key if key is not None else math.inf, str(f["anomaly_id"]), f))

@@ -66,13 +66,18 @@ def acquired(tmp_path_factory):
     scen = base / "scenario.json"
     scen.write_text(json.dumps(SCENARIO))
     sim_dir, survey = base / "sim", base / "survey"
+    profile = base / "station.json"  # the station's own names, stated with their units
+    profile.write_text(json.dumps({
+        "format": "clearfast-station-profile", "format_version": 1, "name": "twin station",
+        "columns": {"air_temp_c": {"column": "AirTC_Avg", "unit": "Deg C"},
+                    "pressure_hpa": {"column": "BP_hPa_Avg", "unit": "hPa"}}}))
     sim = subprocess.Popen(
         [*CLI, "simulate-devices", "--ports-file", str(sim_dir / "ports.json"), "--scenario",
          str(scen), "--time-scale", str(SCALE), "--progress", "json",
          *[a for f in FAULTS for a in ("--fault", f)]],
         stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=_env())
     acquire = [*CLI, "acquire", "--ports-file", str(sim_dir / "ports.json"), "-o", str(survey),
-               "--progress", "json", "--start", PLANNED]
+               "--progress", "json", "--start", PLANNED, "--station-profile", str(profile)]
     out: dict = {}
     try:
         ready = _wait_for(sim, lambda e: e["event"] == "ready", 60.0)[-1]
@@ -140,6 +145,11 @@ def test_acquired_folder_validates_and_matches_the_twin(acquired, twin):
     sim_dir, survey, out = acquired
     report = validate_survey(survey)
     assert report.valid, [p.line() for p in report.problems]
+    # the survey carries the station profile it was acquired with
+    manifest = json.loads((survey / "survey.json").read_text())
+    assert manifest["files"]["station_profile"] == "station_profile.json"
+    assert json.loads((survey / "station_profile.json").read_text())["name"] == "twin station"
+    assert report.summary["weather_columns"]["air_temp_c"] == "AirTC_Avg [Deg C]"
     mission = json.loads((sim_dir / "mission.json").read_text())
     n_pos = len(mission["positions"])
     fr = read_frames_table(survey / "frames.csv")

@@ -53,6 +53,7 @@ def _check_products(out, names, n_max):
         assert manifest["parameters"]["max_anomalies"] == n_max
 
 
+@pytest.mark.slow  # ~60 s: three surveys processed by subprocesses
 def test_local_batch_with_a_failing_survey(tiny_surveys, broken_survey, tmp_path, capsys,
                                            few_anomalies):
     out = tmp_path / "out"
@@ -81,6 +82,7 @@ def test_local_batch_with_a_failing_survey(tiny_surveys, broken_survey, tmp_path
     assert worker_id() not in workers
 
 
+@pytest.mark.slow  # ~130 s: a Dask cluster started and three surveys processed
 def test_dask_batch_on_a_loopback_cluster(tiny_surveys, tmp_path, capsys, few_anomalies):
     from distributed import LocalCluster
 

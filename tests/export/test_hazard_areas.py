@@ -56,8 +56,9 @@ def test_clusters_partition_the_points_and_cover_them(points, buffer_m):
         for i in idx:  # the whole disc (its inscribed polygon) around each point is inside
             assert poly.buffer(1e-6).covers(shapely.Point(e[i], n[i]).buffer(
                 buffer_m * 0.99, quad_segs=QUAD_SEGMENTS))
-    for (pa, _), (pb, _) in zip(clusters, clusters[1:], strict=False):
-        assert not pa.intersects(pb)
+    for k, (pa, _) in enumerate(clusters):  # clusters do not overlap (discs may just touch)
+        for pb, _ in clusters[k + 1:]:
+            assert pa.intersection(pb).area == pytest.approx(0.0, abs=1e-9)
 
 
 def test_geometry_checks_name_the_record():
@@ -178,3 +179,22 @@ def test_export_with_likelihood_threshold_and_all(demo_products, tmp_path):
     with pytest.raises(InvalidInput):
         export_mine_action(root, tmp_path / "c", buffer_m=-1.0)
     assert not (tmp_path / "c").exists()
+
+
+def test_workbook_bytes_do_not_depend_on_the_clock():
+    import time
+
+    import pandas as pd
+
+    from clearfast_gis.export.xlsx import workbook_bytes
+
+    table = pd.DataFrame({"imsma_id": ["CF-A-0001", "CF-A-0002"], "depth_m": [0.0123456, None],
+                          "n": [3, 4]})
+    sheets = {"evidence": (table, ["imsma_id", "depth_m", "n"])}
+    first = workbook_bytes(sheets, {"depth_m": 4}, 1794787200.0)
+    time.sleep(1.1)  # a later second of the wall clock
+    assert workbook_bytes(sheets, {"depth_m": 4}, 1794787200.0) == first
+    from openpyxl import load_workbook
+
+    rows = list(load_workbook(io.BytesIO(first)).active.iter_rows(values_only=True))
+    assert rows == [("imsma_id", "depth_m", "n"), ("CF-A-0001", 0.0123, 3), ("CF-A-0002", None, 4)]

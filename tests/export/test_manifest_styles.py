@@ -106,6 +106,7 @@ def test_default_styles_layers_and_class_colours():
     assert _rule_colours(styles["suspects"]) == {
         "AT mine indication": CLASS_COLOURS_RGB["at_mine"],
         "AP mine indication": CLASS_COLOURS_RGB["ap_mine"],
+        "Mine indication, other cue": CLASS_COLOURS_RGB["at_mine"],
         "Other suspect": CLASS_COLOURS_RGB["unknown"],
         "Clutter": CLASS_COLOURS_RGB["clutter"]}
     root = ET.fromstring(styles["suspects"])

@@ -16,14 +16,7 @@ from clearfast_gis.detection.morphology import (
 )
 from clearfast_gis.registration import ConformalTransform, register_conformal
 from clearfast_gis.registration.synthetic import make_pair, rms_displacement
-
-
-def _scene(seed: int = 0, shape=(240, 300)) -> np.ndarray:
-    rng = np.random.default_rng(seed)
-    f = cv2.GaussianBlur(rng.normal(size=shape).astype(np.float32), (0, 0), 3)
-    f[40:70, 100:220] = np.nan  # a no-data hole
-    f[:, :2] = np.nan
-    return f
+from tests.kernels.scenes import scene
 
 
 def test_use_restores_and_rejects_unknown_names():
@@ -41,7 +34,7 @@ def test_use_restores_and_rejects_unknown_names():
 
 @pytest.mark.parametrize("hat", [top_hat_by_reconstruction, bottom_hat_by_reconstruction])
 def test_reconstruction_hats_identical_to_scikit_image(hat):
-    f = _scene()
+    f = scene()
     ours = hat(f, 15)
     with kernels.use("reference"):
         ref = hat(f, 15)
@@ -51,7 +44,7 @@ def test_reconstruction_hats_identical_to_scikit_image(hat):
 
 
 def test_binary_opening_identical_to_scikit_image():
-    g = np.nan_to_num(_scene(3)) > 0.2
+    g = np.nan_to_num(scene(3)) > 0.2
     ours = binary_opening_by_reconstruction(g, 5)
     with kernels.use("reference"):
         ref = binary_opening_by_reconstruction(g, 5)
@@ -137,7 +130,7 @@ def test_projection_maps_and_resampling_agree():
     both = seen & (rx >= 0)
     assert np.max(np.abs(mx[both] - rx[both])) < 1e-3  # pixels (float32 rounding)
     assert np.max(np.abs(my[both] - ry[both])) < 1e-3
-    frame = _scene(5, (128, 160))[:, ::-1].copy()
+    frame = scene(5, (128, 160))[:, ::-1].copy()
     frame = np.nan_to_num(frame, nan=0.5) + 20.0
     ours = resample(frame, mx, my, 1.2)
     with kernels.use("reference"):

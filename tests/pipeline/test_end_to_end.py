@@ -159,7 +159,8 @@ def test_drifting_lift_is_followed(demo_drift_mosaics):
             truth.setdefault(int(row["scan"]), []).append(
                 [float(row[k]) for k in ("roll_deg", "pitch_deg", "yaw_deg")])
     for scan in range(6):
-        fitted = np.array(state["units"][f"scan_{scan:03d}"]["attitude"]["attitude_rpy_deg"])
+        unit = state["units"][f"mosaics/scan_{scan:03d}"]
+        fitted = np.array(unit["attitude"]["attitude_rpy_deg"])
         true = np.mean(truth[scan], axis=0)
         # roll and yaw trade off a little against each other over a narrow view (a few
         # tenths of a degree); the mosaics below are the real check of the placement

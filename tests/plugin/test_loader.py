@@ -46,10 +46,11 @@ def test_styles_from_geopackage_applied(loaded):
     rules = {r.label(): r for r in renderer.rootRule().children()}
     colours = {label: r.symbol().color().name() for label, r in rules.items()}
     assert colours == {"AT mine indication": "#e31a1c", "AP mine indication": "#e31a1c",
-                       "Other suspect": "#ff7f00", "Clutter": "#969696"}
+                       "Mine indication, other cue": "#e31a1c", "Other suspect": "#ff7f00",
+                       "Clutter": "#969696"}
     assert {label: r.active() for label, r in rules.items()} == {
-        "AT mine indication": True, "AP mine indication": True, "Other suspect": True,
-        "Clutter": False}
+        "AT mine indication": True, "AP mine indication": True,
+        "Mine indication, other cue": True, "Other suspect": True, "Clutter": False}
     assert suspects.labelsEnabled()
     assert suspects.labeling().type() == "rule-based"
     assert suspects.geometryType() == QgsWkbTypes.PointGeometry

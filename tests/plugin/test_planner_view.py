@@ -173,3 +173,14 @@ def test_form_has_the_ranking_fields_when_present(ranked_products, qgis_app):
         layer)
     assert layer.attributeDisplayName(layer.fields().indexOf("priority")) \
         == "Priority (1 = first)"
+
+
+def test_mine_indications_by_likelihood_when_present(project, ranked_products):
+    from clearfast.fieldmap import mine_rows
+    from clearfast.loader import load_products
+
+    # p_mine: A008 1.0, A007 0.9, A004 0.6, A003 0.5, A002 0.4, A001 0.3 (export default 0.5)
+    loaded = load_products(str(ranked_products), project)
+    suspects = loaded.vectors["suspects"]
+    assert _labels(suspects, loaded.extent) == ["S-003", "S-004", "S-007", "S-008"]
+    assert [f["anomaly_id"] for f in mine_rows(suspects)] == ["A008", "A007", "A004", "A003"]

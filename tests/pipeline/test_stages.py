@@ -1,0 +1,69 @@
+"""The chain as a declared list of stages: names, options, keys, run-state units."""
+
+from __future__ import annotations
+
+import dataclasses
+from pathlib import Path
+
+import pytest
+
+from clearfast_gis.pipeline.options import MOSAIC_PARAMETERS, ProcessOptions
+from clearfast_gis.pipeline.resources import StageMeter
+from clearfast_gis.pipeline.stages import STAGE_NAMES, STAGES, RunContext, stage_index
+from clearfast_gis.pipeline.state import RunState
+from clearfast_gis.progress import NULL_PROGRESS
+
+
+def context(options: ProcessOptions, products: Path = Path(".")) -> RunContext:
+    return RunContext(Path("survey"), products, options, NULL_PROGRESS, StageMeter())
+
+
+def keys(options: ProcessOptions) -> dict[str, str]:
+    c = context(options)
+    return {name: c.stage_key(name) for name in STAGE_NAMES}
+
+
+def test_every_option_belongs_to_one_stage():
+    named = [k for s in STAGES for k in s.options]
+    assert len(named) == len(set(named))
+    assert set(named) == {f.name for f in dataclasses.fields(ProcessOptions)}
+    upto_mosaics = {k for s in STAGES[:stage_index("mosaics") + 1] for k in s.options}
+    assert upto_mosaics == set(MOSAIC_PARAMETERS)
+    assert len(set(STAGE_NAMES)) == len(STAGES)
+
+
+@pytest.mark.parametrize(("change", "first_changed"), [
+    ({"d2_m": 0.05}, "detection"),
+    ({"level_fraction": 0.5}, "detection"),
+    ({"invert": False}, "characterisation"),
+    ({"pixel_size_m": 0.05}, "mosaics"),
+    ({"adjust_attitude": False}, "mosaics"),
+    ({"kernels": "reference"}, "band_coregistration"),
+])
+def test_a_parameter_redoes_its_stage_and_those_after(change, first_changed):
+    before, after = keys(ProcessOptions()), keys(ProcessOptions(**change))
+    k = stage_index(first_changed)
+    assert all(before[n] == after[n] for n in STAGE_NAMES[:k])
+    assert all(before[n] != after[n] for n in STAGE_NAMES[k:])
+
+
+def test_units_are_kept_per_stage_key(tmp_path):
+    state = RunState(tmp_path, "inputs")
+    c = context(ProcessOptions(), tmp_path)
+    c.state = state
+    c.stage_state("mosaics").finish("scan_000", {"scan": 0})
+    c.stage_state("products").finish("", {"n": 3})
+    assert set(state.units) == {"mosaics/scan_000", "products"}
+    other = context(ProcessOptions(d1_m=0.4), tmp_path)
+    other.state = state
+    assert other.stage_state("mosaics").done("scan_000")["scan"] == 0
+    assert other.stage_state("products").done() is None
+    assert c.stage_state("products").done()["n"] == 3
+    state.drop("mosaics")
+    assert set(state.units) == {"products"}
+    state.close()
+
+
+def test_unknown_stage_names_the_stages():
+    with pytest.raises(ValueError, match="unknown stage 'mosaic'.*residuals_and_footprint"):
+        stage_index("mosaic")

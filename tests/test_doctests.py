@@ -1,0 +1,25 @@
+"""The examples in the docstrings of the main public functions run as written."""
+
+from __future__ import annotations
+
+import doctest
+import importlib
+
+import pytest
+
+MODULES = [
+    "clearfast_gis.solar",
+    "clearfast_gis.detection.voting",
+    "clearfast_gis.attitude.adjust",
+    "clearfast_gis.attitude.neighbours",
+    "clearfast_gis.pipeline.state",
+    "clearfast_gis.pipeline.run",
+]
+
+
+@pytest.mark.parametrize("name", MODULES)
+def test_docstring_examples(name):
+    module = importlib.import_module(name)
+    result = doctest.testmod(module, optionflags=doctest.ELLIPSIS | doctest.NORMALIZE_WHITESPACE)
+    assert result.attempted > 0, f"{name} has no examples"
+    assert result.failed == 0
