@@ -13,7 +13,7 @@ import pytest
 import rasterio
 
 from clearfast_gis.evaluation.truth import read_truth_objects
-from clearfast_gis.pipeline.run import open_context
+from clearfast_gis.pipeline.inputs import open_context
 from clearfast_gis.survey import read_soil_log
 from clearfast_gis.thermal import (
     build_site_table,
