@@ -20,6 +20,8 @@ sudo_cmd=""
 apt_pkgs=()
 [ -x /usr/bin/python3 ] || apt_pkgs+=(python3)
 /usr/bin/python3 -c "import ensurepip" 2>/dev/null || apt_pkgs+=(python3-venv)
+# exiftool decodes radiometric camera files (clearfast import / thermal-frame)
+command -v exiftool >/dev/null 2>&1 || apt_pkgs+=(libimage-exiftool-perl)
 if [ "$want_test" = 1 ]; then
   /usr/bin/python3 -c "import qgis.core" 2>/dev/null || apt_pkgs+=(python3-qgis qgis-providers)
   command -v qgis_process >/dev/null 2>&1 || apt_pkgs+=(qgis)

@@ -18,6 +18,12 @@ camera serves one too, :class:`DropFolderServer`). Protocol, in folder ``DIR``:
    band, ``{"time_utc": ["2026-11-15T06:00:03.300Z", "2026-11-15T06:00:03.700Z"]}``;
 3. the adapter reads the frame and deletes it.
 
+A radiometric camera writes its own file instead, under the same name with its own suffix:
+``frame_000012.jpg`` (FLIR R-JPEG), ``.fff``, or ``.tif`` as a TLinear or temperature TIFF
+(recognised by its GDAL unit tag or float samples). It is read by
+:func:`clearfast_gis.cameras.read_frames` (one frame, one broadband band); the exposure then
+carries the camera's own radiometry and the time the file states (``docs/import.md``).
+
 A frame that does not arrive within the timeout raises :class:`CameraTimeout`; frames left by
 an earlier session are deleted when the adapter opens the folder, and a late frame of an
 earlier request is never taken for the current one (the sequence number is in its name).
@@ -46,7 +52,9 @@ from clearfast_gis.errors import ClearfastError
 from clearfast_gis.timeutil import format_utc, parse_utc
 
 REQUEST_NAME = "request.json"
-_FRAME = re.compile(r"^frame_(\d+)\.tif$")
+_FRAME = re.compile(r"^frame_(\d+)\.(tif|jpg|jpeg|fff)$", re.IGNORECASE)
+RADIOMETRIC_SUFFIXES = (".jpg", ".jpeg", ".fff")
+"""Drop-frame suffixes of radiometric camera files (a ``.tif`` is one by its tags)."""
 
 
 class CameraError(ClearfastError):
@@ -68,10 +76,14 @@ class Exposure:
     time_s : tuple of float, optional
         UTC epoch seconds of each band's exposure from the camera's clock; None when the
         camera does not say (the runner then uses the trigger time).
+    radiometry : CameraRadiometry, optional
+        A radiometric camera's own calibration of ``counts``
+        (:mod:`clearfast_gis.radiometry.camera`); None for detector counts.
     """
 
     counts: np.ndarray
     time_s: tuple[float, ...] | None = None
+    radiometry: object = None
 
 
 class Camera(Protocol):
@@ -106,7 +118,8 @@ def as_exposure(frame: object, source: str = "camera") -> Exposure:
     if times is not None and len(times) != counts.shape[0]:
         raise CameraError(f"camera gave {len(times)} exposure times for {counts.shape[0]} "
                           "bands", source)
-    return Exposure(counts, None if times is None else tuple(float(t) for t in times))
+    return Exposure(counts, None if times is None else tuple(float(t) for t in times),
+                    getattr(frame, "radiometry", None))
 
 
 class CallableCamera:
@@ -142,13 +155,17 @@ def write_drop_frame(folder: str | os.PathLike, sequence: int, exposure: Exposur
 
 
 def read_drop_frame(path: str | os.PathLike) -> Exposure:
-    """Read a frame written by the camera side (see the module docstring).
+    """Read a frame written by the camera side (see the module docstring): the toolkit's
+    counts TIFF, or a radiometric camera's file.
 
     Raises
     ------
     CameraError
-        For a file that is not a uint16 TIFF or whose description holds bad times.
+        For a file that is not a uint16 TIFF or whose description holds bad times, or a
+        radiometric file the camera readers refuse.
     """
+    if Path(path).suffix.lower() in RADIOMETRIC_SUFFIXES or _is_radiometric_tiff(path):
+        return read_radiometric_frame(path)
     try:
         with tifffile.TiffFile(path) as tif:
             if not len(tif.pages):
@@ -167,6 +184,37 @@ def read_drop_frame(path: str | os.PathLike) -> Exposure:
         except (ValueError, TypeError, AttributeError) as exc:
             raise CameraError(f"bad exposure times in the description ({exc})", path) from None
     return as_exposure(Exposure(counts, times), str(path))
+
+
+def _is_radiometric_tiff(path: str | os.PathLike) -> bool:
+    """A TIFF with float samples or a GDAL unit tag (a TLinear or temperature TIFF)."""
+    try:
+        with tifffile.TiffFile(path) as tif:
+            page = tif.pages[0]
+            return page.dtype.kind == "f" or "<Item name=\"UNITTYPE\"" in str(
+                page.tags.get("GDAL_METADATA").value if "GDAL_METADATA" in page.tags else "")
+    except Exception:  # unreadable: read_drop_frame reports it
+        return False
+
+
+def read_radiometric_frame(path: str | os.PathLike) -> Exposure:
+    """A radiometric camera's file as an exposure: the survey's counts of its one frame, the
+    camera's radiometry, and the time the file states (UTC; None without a zone)."""
+    from datetime import UTC
+
+    from clearfast_gis.cameras import read_frames
+    from clearfast_gis.cameras.survey_import import radiometry_of, stored_counts
+
+    try:
+        frames = read_frames(path)
+    except ClearfastError as exc:
+        raise CameraError(exc.message, path) from None
+    if len(frames) != 1:
+        raise CameraError(f"{len(frames)} frames in one drop file, expected 1", path)
+    fr = frames[0]
+    t = fr.time
+    times = None if t is None or t.tzinfo is None else (t.astimezone(UTC).timestamp(),)
+    return Exposure(stored_counts(fr)[None], times, radiometry_of(fr))
 
 
 def _replace_text(path: Path, text: str) -> None:
@@ -228,9 +276,8 @@ class DropFolderCamera:
         _replace_text(self.folder / REQUEST_NAME, json.dumps(
             {"session": self.session, "sequence": self.sequence,
              "requested_utc": format_utc(self.clock())}) + "\n")
-        path = self.folder / name
         deadline = time.monotonic() + self.timeout_s
-        while not path.exists():
+        while (path := self._answer(self.sequence)) is None:
             if time.monotonic() > deadline:
                 raise CameraTimeout(f"camera: no {name} within {self.timeout_s:g} s",
                                     self.folder)
@@ -239,6 +286,15 @@ class DropFolderCamera:
             return read_drop_frame(path)
         finally:
             self._remove_frames(up_to=self.sequence)
+
+    def _answer(self, sequence: int) -> Path | None:
+        """The frame file answering request ``sequence`` (any accepted suffix), or None."""
+        stem = frame_name(sequence)[:-len(".tif")]
+        for suffix in (".tif", *RADIOMETRIC_SUFFIXES):
+            for cand in (stem + suffix, stem + suffix.upper()):
+                if (self.folder / cand).exists():
+                    return self.folder / cand
+        return None
 
     def _remove_frames(self, up_to: int | None = None) -> None:
         """Delete the frames of requests up to ``up_to`` (all without it): answered, or

@@ -94,7 +94,7 @@ def classify_sentence(text: str, checksums: str = "required"
     sentence is found as in :func:`clearfast_gis.survey.parse_nmea`.
     """
     verdict = classify_line(text, checksums)
-    kind = "bad_checksum" if verdict.kind == "no_checksum" else verdict.kind
+    kind = {"no_checksum": "bad_checksum", "comment": "junk"}.get(verdict.kind, verdict.kind)
     return kind, verdict.msg
 
 

@@ -212,6 +212,12 @@ class MissionRunner:
                                 position_order=lambda i: rank.get(int(i), len(rank) + int(i)))
         self._expected: tuple[int, ...] | None = None
         self._expected_from = ""
+        self._first_frame = True
+        self._radiometry = None
+        if manifest is not None and "radiometry" in manifest["camera"]:
+            from clearfast_gis.radiometry.camera import CameraRadiometry
+
+            self._radiometry = CameraRadiometry.from_manifest(manifest["camera"]["radiometry"])
         if manifest is not None:
             self._expected_from = "survey.json camera"
             w, h = manifest["camera"]["resolution"]
@@ -308,6 +314,29 @@ class MissionRunner:
             self.progress.close()
         return result
 
+    def _note_radiometry(self, exposure: Exposure) -> None:
+        """A radiometric camera's own calibration goes into ``survey.json``
+        (``camera.radiometry``) with the first frame; every later frame must carry the same
+        (one survey, one camera setting), and counts never mix with radiometric frames."""
+        rad = exposure.radiometry
+        if self._first_frame:
+            self._first_frame = False
+            if self._radiometry is None and rad is not None:
+                self._radiometry = rad
+                if self.manifest is not None:
+                    self.manifest["camera"]["radiometry"] = rad.to_manifest()
+                    self.manifest["camera"]["bit_depth"] = 16
+                    if self.blackbodies is None:  # a radiometric camera needs none
+                        for key in ("blackbody_frames", "blackbody_log"):
+                            self.manifest["files"].pop(key, None)
+                    write_survey_json(self.root / "survey.json", self.manifest)
+                self._event("radiometry", f"camera radiometry {rad.kind} from the first frame")
+                return
+        if rad != self._radiometry:
+            raise CameraError("the camera's radiometry differs from the survey's (Planck "
+                              "constants, scale, or counts mixed with radiometric frames)",
+                              "camera")
+
     def _expose(self, result: MissionResult) -> tuple[Exposure, float]:
         """Trigger the camera (again after a timeout, up to ``capture_retries`` times); the
         exposure and the trigger time."""
@@ -351,6 +380,7 @@ class MissionRunner:
                                       f"expected {self._expected} (bands, H, W) from "
                                       f"{self._expected_from}", "camera")
                 self._expected, self._expected_from = counts.shape, "the first frame"
+                self._note_radiometry(exposure)
                 times = exposure.time_s or (t_s,) * counts.shape[0]
                 self.store.stage(Capture(scan, kind, index, repeat, float(readback[0]),
                                          float(readback[1]), times, counts))

@@ -86,9 +86,12 @@ def command(survey: str, products: str, bands: tuple[str, ...], mode: str, path_
                      "units": "degC", "bands": [], "scans": []}
     for b in band_ids:
         info = srv.bands[b]
-        band_events = [e for e in events if e.band == b]
+        own = srv.radiometry is not None  # a radiometric camera: no blackbody events
+        band_events = [] if own else [e for e in events if e.band == b]
         entry = {"index": b, "name": info.name, "lambda_min_um": info.lambda_min_um,
                  "lambda_max_um": info.lambda_max_um, "n_events": len(band_events),
+                 "calibration": f"camera radiometry ({srv.radiometry.kind})" if own
+                 else "two blackbodies",
                  "atmospheric_correction": has_transmittance_model(info.lambda_min_um,
                                                                    info.lambda_max_um)}
         if not entry["atmospheric_correction"]:

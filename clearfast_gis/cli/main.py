@@ -31,6 +31,8 @@ SUBCOMMANDS: dict[str, tuple[str, str]] = {
     "log": ("log", "Log the field instruments over serial ports."),
     "acquire": ("acquire", "Run a scanning mission with the field instruments."),
     "simulate-devices": ("simulate_devices", "Serve the digital twin's instruments on ptys."),
+    "import": ("import_survey", "Build a survey folder from a radiometric camera's files."),
+    "thermal-frame": ("thermal_frame", "One camera frame's object temperature (deg C TIFF)."),
     "demo": ("demo", "Simulate the embedded demo survey and process it end to end."),
     "options": ("options_cmd", "Show the processing defaults (--json for programs)."),
 }

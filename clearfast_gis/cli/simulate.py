@@ -23,10 +23,15 @@ from clearfast_gis.cli.options import make_progress, overwrite_opt, progress_opt
 @click.option("--scenario", "scenario_path",
               type=click.Path(exists=True, dir_okay=False, readable=True),
               help="Scenario JSON (schemas/scenario.schema.json): overrides and objects.")
+@click.option("--camera-format", type=click.Choice(["flir-rjpeg", "tlinear", "celsius-tiff"]),
+              default=None,
+              help="Write the frames as a radiometric camera does (one LWIR band, no "
+              "blackbodies): OUT becomes a folder for clearfast import (docs/import.md).")
 @overwrite_opt
 @progress_opt
 def command(out: str, preset_name: str | None, seed: int, drift: bool,
-            scenario_path: str | None, overwrite: bool, progress_mode: str) -> None:
+            scenario_path: str | None, camera_format: str | None, overwrite: bool,
+            progress_mode: str) -> None:
     """Simulate a diurnal thermal-IR survey into the folder OUT (with truth/)."""
     from clearfast_gis.simulate.config import preset
     from clearfast_gis.simulate.run import simulate_survey
@@ -41,9 +46,17 @@ def command(out: str, preset_name: str | None, seed: int, drift: bool,
             objects = list(objects)
     else:
         config = preset(preset_name or "demo")
+    if camera_format is not None:
+        from clearfast_gis.simulate.camera_files import radiometric_camera_config
+
+        config = radiometric_camera_config(config)
     progress = make_progress(progress_mode)
     result = simulate_survey(out, config, seed=seed, drift=drift, objects=objects,
                              draw_clutter=draw_clutter, progress=progress, overwrite=overwrite)
+    if camera_format is not None:
+        from clearfast_gis.simulate.camera_files import write_camera_folder
+
+        write_camera_folder(result.root, result.twin, camera_format)
     if progress_mode != "json":
         click.echo(f"simulated {result.n_scans} scans x {result.n_positions} positions x "
                    f"{result.n_bands} bands = {result.n_frames} frames, "

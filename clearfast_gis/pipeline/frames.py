@@ -16,6 +16,7 @@ from clearfast_gis.geometry.gnss import PlatformTrack
 from clearfast_gis.geometry.pose import CameraPose, pose_from_ptu
 from clearfast_gis.mosaic import FrameInput
 from clearfast_gis.radiometry.calibration import CalibrationEvent
+from clearfast_gis.radiometry.camera import CameraRadiometry
 from clearfast_gis.radiometry.stage import (
     AirState,
     apparent_temperature_frames,
@@ -36,7 +37,7 @@ class SurveyContext:
     camera : camera model
     track : PlatformTrack
         Antenna positions in the survey CRS.
-    events : list of CalibrationEvent
+    events : list of CalibrationEvent, or CameraRadiometry (a radiometric camera)
     weather : clearfast_gis.survey.WeatherLog
     band_offsets : list of ConformalTransform
         Band b to band 0 alignment (maps band-0 pixels to band-b pixels).
@@ -45,7 +46,7 @@ class SurveyContext:
     survey: object
     camera: object
     track: PlatformTrack
-    events: list[CalibrationEvent]
+    events: list[CalibrationEvent] | CameraRadiometry
     weather: object
     band_offsets: list[ConformalTransform]
 

@@ -44,6 +44,8 @@ def input_key(survey, station_profile: str | Path | None = None) -> str:
     h = hashlib.sha256()
     h.update(json.dumps(survey.manifest, sort_keys=True).encode())
     for key in ("frames", "blackbody_frames", "blackbody_log", "gnss", "weather", "soil"):
+        if key not in survey.manifest["files"]:  # blackbodies of a radiometric camera
+            continue
         p = survey.path(key)
         st = p.stat()
         h.update(f"{key}:{st.st_size}:{st.st_mtime_ns}".encode())

@@ -255,6 +255,7 @@ def base_manifest(survey, epsg: int, options, scan_records: dict[int, dict], fix
     behind the fit, and how many frames an individual MI correction moved.
     """
     from clearfast_gis.export.manifest import sha256_file
+    from clearfast_gis.radiometry.camera_check import camera_blackbody_check
 
     scans = [{"scan": int(s), "time_utc": format_utc(r["time_s"]),
               "file": f"mosaics/scan_{int(s):03d}.tif",
@@ -268,6 +269,8 @@ def base_manifest(survey, epsg: int, options, scan_records: dict[int, dict], fix
     root = Path(survey.root).resolve()  # survey.path() resolves; the root may be relative
     for key in ("survey", "mission", "frames", "blackbody_frames", "blackbody_log", "gnss",
                 "weather", "soil"):
+        if key != "survey" and key not in survey.manifest["files"]:
+            continue  # no blackbodies with a radiometric camera
         p = root / "survey.json" if key == "survey" else survey.path(key)
         inputs[p.relative_to(root).as_posix()] = sha256_file(p)
     return {
@@ -278,6 +281,7 @@ def base_manifest(survey, epsg: int, options, scan_records: dict[int, dict], fix
         "software": {"name": "clearfast-gis", "version": __version__},
         "survey_path": str(Path(survey.root).resolve()),
         "inputs": inputs,
+        **({"camera_check": check} if (check := camera_blackbody_check(survey)) else {}),
         "parameters": options.as_dict(),
         "bands": [{"name": b.name, "lambda_min_um": b.lambda_min_um,
                    "lambda_max_um": b.lambda_max_um} for b in survey.bands],

@@ -113,11 +113,43 @@ def atmospheric_transmittance(
     p = np.asarray(pressure_hpa, dtype=np.float64)
     if np.any(p <= 0):
         raise InvalidInput("pressure must be positive", field="pressure_hpa")
-    sw = np.sqrt(water_vapour_content(t_air_k, rh))
-    s = np.sqrt(d) * np.sqrt(p / STANDARD_PRESSURE_HPA)
-    tau = (FLIR_X * np.exp(-s * (FLIR_A1_PER_SQRT_M + FLIR_B1 * sw))
-           + (1.0 - FLIR_X) * np.exp(-s * (FLIR_A2_PER_SQRT_M + FLIR_B2 * sw)))
+    tau = water_vapour_transmittance(d * (p / STANDARD_PRESSURE_HPA),
+                                     water_vapour_content(t_air_k, rh))
     return np.clip(tau, 1e-6, 1.0)
+
+
+def water_vapour_transmittance(
+    path_m: ArrayLike,
+    w: ArrayLike,
+    x: float = FLIR_X,
+    a1: float = FLIR_A1_PER_SQRT_M,
+    a2: float = FLIR_A2_PER_SQRT_M,
+    b1: float = FLIR_B1,
+    b2: float = FLIR_B2,
+) -> np.ndarray:
+    """The two-term water-vapour transmittance ``X exp(-sqrt(d)(a1 + b1 sqrt(w))) + ...``.
+
+    The one definition of the model's formula (module notes), used with the defaults by
+    :func:`atmospheric_transmittance` and with a camera's own stored constants by
+    :mod:`clearfast_gis.radiometry.flir`.
+
+    Parameters
+    ----------
+    path_m : array_like
+        Path length ``d``, metres (already scaled for pressure where wanted).
+    w : array_like
+        Water-vapour content from :func:`water_vapour_content` (broadcast).
+    x, a1, a2, b1, b2 : float
+        The model's constants (``a``, ``b`` per sqrt(m)).
+
+    Returns
+    -------
+    ndarray of float64
+        Transmittance (not clipped), shape of the broadcast inputs.
+    """
+    s = np.sqrt(np.asarray(path_m, dtype=np.float64))
+    sw = np.sqrt(np.asarray(w, dtype=np.float64))
+    return x * np.exp(-s * (a1 + b1 * sw)) + (1.0 - x) * np.exp(-s * (a2 + b2 * sw))
 
 
 def path_radiance(tau: ArrayLike, t_air_k: ArrayLike, table: BandTable) -> np.ndarray:

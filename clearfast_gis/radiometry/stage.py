@@ -22,7 +22,11 @@ from clearfast_gis import kernels
 from clearfast_gis.errors import InvalidInput
 from clearfast_gis.progress import NULL_PROGRESS, Progress
 from clearfast_gis.radiometry.apparent import raw_to_apparent
-from clearfast_gis.radiometry.atmosphere import LW_WINDOW_UM, atmospheric_transmittance
+from clearfast_gis.radiometry.atmosphere import (
+    LW_WINDOW_UM,
+    atmospheric_transmittance,
+    correct_atmosphere,
+)
 from clearfast_gis.radiometry.calibration import (
     DEFAULT_MIN_CONTRAST_COUNTS,
     CalibrationEvent,
@@ -31,6 +35,7 @@ from clearfast_gis.radiometry.calibration import (
     blend_gain_offsets,
     select_events_many,
 )
+from clearfast_gis.radiometry.camera import CameraRadiometry
 from clearfast_gis.radiometry.fused import apparent_frame
 from clearfast_gis.radiometry.table import BandTable
 from clearfast_gis.radiometry.timeseries import interpolate_log
@@ -58,8 +63,10 @@ def has_transmittance_model(lambda_min_um: float, lambda_max_um: float) -> bool:
     return LW_WINDOW_UM[0] <= lambda_min_um < lambda_max_um <= LW_WINDOW_UM[1]
 
 
-def calibration_events(survey: Survey) -> list[CalibrationEvent]:
-    """All calibration events of a survey, every band.
+def calibration_events(survey: Survey) -> list[CalibrationEvent] | CameraRadiometry:
+    """How the survey's counts become radiance: its blackbody calibration events (every band),
+    or the camera's own radiometry for a self-calibrated radiometric camera
+    (``camera.radiometry``).
 
     Mean blackbody images come from ``blackbody/frames.csv``; each blackbody's temperature is
     the blackbody log interpolated at the mean time of that blackbody's frames.
@@ -70,9 +77,12 @@ def calibration_events(survey: Survey) -> list[CalibrationEvent]:
 
     Returns
     -------
-    list of CalibrationEvent
+    list of CalibrationEvent, or CameraRadiometry
     """
     from clearfast_gis.survey import read_blackbody_frames, read_blackbody_log
+
+    if survey.radiometry is not None:
+        return survey.radiometry
 
     label = survey.label("blackbody_log")
     log = read_blackbody_log(survey.path("blackbody_log"), label)
@@ -139,7 +149,7 @@ def apparent_temperature_frames(
     time_s: ArrayLike,
     band: int,
     table: BandTable,
-    events: Sequence[CalibrationEvent],
+    events: Sequence[CalibrationEvent] | CameraRadiometry,
     air: AirState,
     path_length_m: ArrayLike | None = None,
     mode: str = "interpolate",
@@ -161,8 +171,9 @@ def apparent_temperature_frames(
         Band index (selects the events).
     table : BandTable
         The band.
-    events : sequence of CalibrationEvent
-        Calibration events (any bands).
+    events : sequence of CalibrationEvent, or CameraRadiometry
+        Calibration events (any bands), or a radiometric camera's own calibration (its
+        at-sensor blackbody temperature gives the at-camera band radiance).
     air : AirState
         Air state per frame, arrays (P,).
     path_length_m : float, array_like (P,), (P, H, W) or (P, h, w), optional
@@ -206,7 +217,8 @@ def apparent_temperature_frames(
         raise InvalidInput(f"path length lattice {path.shape} does not fit frames {raw.shape}",
                            field="path_length_m")
     cache: dict[int, GainOffset] = {} if gain_cache is None else gain_cache
-    selected = select_events_many(events, times, mode, band)
+    own = events if isinstance(events, CameraRadiometry) else None
+    selected = [] if own is not None else select_events_many(events, times, mode, band)
     tau_all = None
     if atmosphere:  # every frame's transmittance in one call
         frame_axis = (n,) + (1,) * (path.ndim - 1 if path.ndim == 3 else path.ndim)
@@ -221,6 +233,11 @@ def apparent_temperature_frames(
         raise InvalidInput(f"output {out.dtype} {out.shape} does not match frames {raw.shape}",
                            field="out")
     for k in range(n):
+        if own is not None:
+            out[k] = camera_apparent(raw[k], own, tau_all[k] if tau_all is not None else 1.0,
+                                     air.t_air_k[k], table, raw.shape[1:])
+            progress.advance(1)
+            continue
         parts = []
         for ev, w in selected[k]:
             if id(ev) not in cache:
@@ -237,6 +254,24 @@ def apparent_temperature_frames(
                                          float(b_air_all[k]), table, out[k])
         progress.advance(1)
     return out
+
+
+def camera_apparent(raw: np.ndarray, camera: CameraRadiometry, tau: ArrayLike,
+                    t_air_k: float, table: BandTable, shape_hw: tuple[int, int]) -> np.ndarray:
+    """Apparent temperature (kelvin, float32 (H, W)) of one radiometric camera frame:
+    counts -> at-sensor blackbody temperature (the camera's own calibration) -> band radiance
+    -> the toolkit's atmosphere (Eq. 4) -> inverse Planck (Eq. 5).
+
+    ``tau`` is the frame's transmittance: a scalar, (H, W), or a coarser lattice spanning the
+    frame corner to corner (interpolated bilinearly).
+    """
+    tau = np.asarray(tau, dtype=np.float64)
+    if tau.ndim == 2 and tau.shape != tuple(shape_hw):
+        tau = cv2.resize(tau.astype(np.float32), (shape_hw[1], shape_hw[0]),
+                         interpolation=cv2.INTER_LINEAR).astype(np.float64)
+    radiance = table.radiance(camera.sensor_temperature_k(raw))
+    surface = correct_atmosphere(radiance, tau, t_air_k, table)
+    return table.temperature(surface, dtype=np.float32)
 
 
 def apparent_temperature_scan(

@@ -67,6 +67,7 @@ class SimulationResult:
     n_frames: int
     objects: list[SceneObject]
     timings_s: dict = field(default_factory=dict)
+    twin: object = field(default=None, repr=False)
 
 
 def simulate_survey(out_dir: str | Path, config: SimConfig, seed: int = 0, drift: bool = False,
@@ -230,4 +231,4 @@ def simulate_survey(out_dir: str | Path, config: SimConfig, seed: int = 0, drift
     timings["logs"] = clock() - t_stage
     timings["write"] = t_write
     return SimulationResult(root, config.n_scans, n_pos, n_bands,
-                            config.n_scans * n_pos * n_bands, objs, timings)
+                            config.n_scans * n_pos * n_bands, objs, timings, twin)

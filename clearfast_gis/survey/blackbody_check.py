@@ -19,7 +19,7 @@ def check_blackbody_pairs(events, survey) -> None:
 
     Parameters
     ----------
-    events : list of CalibrationEvent
+    events : list of CalibrationEvent, or CameraRadiometry (nothing to check)
         The survey's calibration events (:func:`clearfast_gis.radiometry.stage.
         calibration_events`: blackbody temperatures, kelvin, and mean counts per band).
     survey : Survey
@@ -30,6 +30,8 @@ def check_blackbody_pairs(events, survey) -> None:
     InvalidInput
         Naming the blackbody log or frames table, the time and the band.
     """
+    if not isinstance(events, list):  # a radiometric camera's own calibration
+        return
     from clearfast_gis.radiometry.calibration import DEFAULT_MIN_CONTRAST_COUNTS
 
     for ev in events:

@@ -97,6 +97,16 @@ class Survey:
         return camera_from_manifest(self.manifest["camera"])
 
     @functools.cached_property
+    def radiometry(self):
+        """The camera's own calibration (``camera.radiometry``, a
+        :class:`~clearfast_gis.radiometry.camera.CameraRadiometry`), or None for detector counts
+        calibrated by the blackbodies."""
+        from clearfast_gis.radiometry.camera import CameraRadiometry
+
+        doc = self.manifest["camera"].get("radiometry")
+        return None if doc is None else CameraRadiometry.from_manifest(doc, MANIFEST_NAME)
+
+    @functools.cached_property
     def station_profile(self):
         """The station profile ``files.station_profile`` names (a
         :class:`~clearfast_gis.survey.station_profiles.StationProfile`), or None."""

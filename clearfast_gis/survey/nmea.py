@@ -232,12 +232,6 @@ class GnssLog:
         return {int(a): int(b) for a, b in zip(q, n, strict=True)}
 
 
-_PARSED: dict[tuple, GnssLog] = {}
-"""The last logs parsed (a survey's log is parsed by the validation, then by the chain)."""
-
-
-"""The last logs parsed (a survey's log is parsed by the validation, then by the chain)."""
-
 #: an RMC or ZDA date farther than this from the survey's own start is refused (a receiver's
 #: cold-start or week-rollover date), seconds
 MAX_DATE_OFFSET_S = 7 * 86400.0
@@ -311,6 +305,10 @@ def _no_epoch_cause(n_lines: int, n_sentences: int, binary: int,
         return (f"no GGA sentence has a checksum ({len(nocs)} line(s) without one, first "
                 f"line {nocs[0]}); if the receiver sends none, accept them with survey.json "
                 '"gnss": {"checksums": "optional"}')
+    if skipped["rmc"] and not skipped["gga"]:
+        return (f"no GGA sentence, only RMC ({len(skipped['rmc'])} line(s), first line "
+                f"{skipped['rmc'][0]}): RMC has neither fix quality nor altitude; set the "
+                "receiver to output GGA")
     if skipped["untimed"]:
         return (f"{len(skipped['untimed'])} GGA sentence(s) but none has a time, first line "
                 f"{skipped['untimed'][0]} (the receiver never had a fix)")
@@ -331,18 +329,18 @@ def _parse_nmea(text: str, label: str, fallback_date_s: float | None,
     records: list[tuple] = []  # (tod_s, kind, payload)
     skipped: dict[str, list[int]] = {k: [] for k in (
         "bad_checksum", "no_checksum", "junk", "untimed", "void", "implausible", "prefixed",
-        "bad_gga", "gga")}
+        "bad_gga", "gga", "rmc")}
     binary = 0
     n_lines = n_sentences = 0
     for lineno, raw in enumerate(split_lines(text), start=1):
-        if not raw.strip():
+        verdict = classify_line(raw, checksums)
+        if not raw.strip() or verdict.kind == "comment":
             continue
         n_lines += 1
-        verdict = classify_line(raw, checksums)
         if verdict.prefixed:
             skipped["prefixed"].append(lineno)
-        if verdict.sentence_type == "GGA":
-            skipped["gga"].append(lineno)
+        if verdict.sentence_type in ("GGA", "RMC"):
+            skipped[verdict.sentence_type.lower()].append(lineno)
         if verdict.kind != "ok":
             skipped[verdict.kind].append(lineno)
             if verdict.kind == "bad_checksum" and verdict.sentence_type == "GGA":

@@ -8,7 +8,10 @@ A receiver's raw log is not always one clean ``$...*hh`` sentence per CR LF line
 - some receivers start every line with ``$$`` (ST Teseo): the sentence starts at the last
   ``$`` followed by an address field;
 - some loggers end lines with CR alone;
-- some receivers send no checksum at all (accepted only on request, ``checksums="optional"``).
+- some receivers send no checksum at all (accepted only on request, ``checksums="optional"``);
+- capture tools (gpsd's regression logs, many loggers) write ``#`` comment lines, which may
+  quote a sentence as an example: a line that starts with ``#`` followed by white space (or
+  nothing) is a comment, never a sentence (a ``#`` byte glued to a sentence is binary junk).
 
 Time fields: ``hhmmss[.s]`` with the leap second ``23:59:60`` (placed in the last
 millisecond of the day, so that UTC epoch seconds stay increasing); RMC dates ``ddmmyy``
@@ -52,6 +55,9 @@ def split_lines(text: str) -> list[str]:
     return text.split("\n") if "\n" in text else text.split("\r")
 
 
+_COMMENT = re.compile(r"#(\s|$)")
+
+
 @dataclass(frozen=True)
 class LineVerdict:
     """What one raw line holds.
@@ -61,7 +67,7 @@ class LineVerdict:
     kind : str
         ``"ok"`` (a sentence pynmea2 parsed), ``"bad_checksum"`` (checksum present and
         wrong), ``"no_checksum"`` (no ``*hh`` while checksums are required), ``"junk"``
-        (no sentence, or one pynmea2 cannot parse).
+        (no sentence, or one pynmea2 cannot parse), ``"comment"`` (a ``#`` line).
     msg : pynmea2.NMEASentence or None
         The parsed sentence when ``kind == "ok"``.
     prefixed : bool
@@ -89,6 +95,8 @@ def classify_line(line: str, checksums: str = "required") -> LineVerdict:
         checksum that is present is always verified.
     """
     text = line.strip()
+    if _COMMENT.match(text):
+        return LineVerdict("comment")
     m = _SENTENCE.search(text)
     if m is None:
         return LineVerdict("junk")

@@ -78,16 +78,16 @@ _units("length", 25.4, 0.0, "in", "inch", "inches")
 KNOWN_COLUMNS: dict[str, tuple[str, ...]] = {
     "air_temp_c": ("AirTC_Avg", "AirT_C_Avg", "AirTC", "AirT_C", "AirTF_Avg", "AirTF",
                    "T107_C_Avg", "Temp_C_Avg", "Ta_Avg", "AirTemp_Avg", "AirT_Avg"),
-    "rh_pct": ("RH_Avg", "RH", "RelHumid_Avg", "RH_percent_Avg", "Ua_Avg"),
+    "rh_pct": ("RH_Avg", "RH", "RelHumid_Avg", "RelHumid", "RH_percent_Avg", "Ua_Avg"),
     "pressure_hpa": ("BP_hPa_Avg", "BP_mbar_Avg", "BP_mbar", "BP_hPa", "BP_kPa_Avg", "BP_kPa",
                      "BP_inHg_Avg", "BP_inHg", "BP_mmHg_Avg", "Pa_Avg", "BaromPres_Avg"),
     "wind_ms": ("WS_ms_Avg", "WS_ms_S_WVT", "WS_ms", "WS_kph_Avg", "WS_kph_S_WVT",
                 "WS_mph_Avg", "WS_mph_S_WVT", "WS_knots_Avg", "WS_knots_S_WVT", "Sm_Avg",
-                "WindSpd_Avg"),
+                "WindSpd_Avg", "WindSpd_m_s_Avg"),
     "solar_wm2": ("SlrW_Avg", "SlrFD_W_Avg", "SlrkW_Avg", "SR_Avg", "SW_in_Avg", "SWin_Avg",
-                  "short_up_Avg", "SUp_Avg", "IncomingSW_Avg"),
+                  "short_up_Avg", "SUp_Avg", "IncomingSW_Avg", "Rad_SWin_Avg"),
     "sky_lw_wm2": ("IRSky_Avg", "LW_in_Avg", "LWin_Avg", "long_up_corr_Avg", "LUpCo_Avg",
-                   "IncomingLW_Avg"),
+                   "IncomingLW_Avg", "Rad_LWin_Avg"),
     "rain_mm": ("Rain_mm_Tot", "Rain_in_Tot", "Rain_Tot", "Rain_mm", "Rc_Tot"),
 }
 

@@ -70,8 +70,14 @@ def test_mosaics_are_valid_cogs_in_degrees_c(demo_products):
 
 def test_mosaics_match_true_apparent_temperature(demo_survey, demo_products):
     """Issue #6: the mosaic of every scan agrees with the truth over the footprint."""
-    for scan in range(6):
-        mosaic, truth = truth_on_mosaic_grid(demo_survey, demo_products, scan)
+    assert_mosaics_match_truth(demo_survey, demo_products, 6)
+
+
+def assert_mosaics_match_truth(truth_folder, products, n_scans: int) -> None:
+    """The demo's accuracy targets for the mosaics of ``products`` against the apparent
+    temperature in ``truth_folder/truth``."""
+    for scan in range(n_scans):
+        mosaic, truth = truth_on_mosaic_grid(truth_folder, products, scan)
         ok = np.isfinite(mosaic) & np.isfinite(truth)
         assert ok.sum() > 0.5 * ok.size
         err = mosaic[ok] - truth[ok]

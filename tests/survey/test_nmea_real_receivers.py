@@ -6,6 +6,7 @@ missing or failing checksums, void RMC, cold-start dates, leap seconds, fix qual
 from __future__ import annotations
 
 import math
+import re
 from datetime import UTC, datetime
 
 import numpy as np
@@ -183,6 +184,8 @@ def test_property_junk_prefix_and_line_ends(junk, dollars, eol, tod):
     end never change the epoch read."""
     t = parse_utc("2026-11-15T00:00:00Z") + round(tod, 2)
     prefix = junk.decode("latin-1").replace("$", "").replace("\r", "").replace("\n", "")
+    if re.match(r"\s*#(\s|$)", prefix):  # a comment line (see nmea_lines), not junk
+        prefix = "\x00" + prefix
     gga = gga_sentence(t, -12.5, 44.25, 10.0, 4, 9, 1.0)
     rmc = rmc_sentence(t, -12.5, 44.25)
     text = prefix + dollars + gga[1:] if dollars else prefix + gga

@@ -149,6 +149,25 @@ def test_stuck_sensor_and_spike():
     assert pressure_range_hpa(3000.0)[1] < 780.0
 
 
+def test_cr1000x_weather_program_with_cnr4_names_needs_no_profile():
+    """A CR1000X "Weather" program with a CNR4 (column names of a real quarter-hourly table
+    met in the acceptance run): RelHumid sample, WindSpd_m_s_Avg, Rad_SWin_Avg, Rad_LWin_Avg
+    were not recognised and every quantity but air, pressure and rain was called missing."""
+    w = _table(5)
+    names = {"AirTC_Avg": "AirT_C_Avg", "RH_Avg": "RelHumid", "BP_hPa_Avg": "BP_mbar_Avg",
+             "WS_ms_Avg": "WindSpd_m_s_Avg", "SlrW_Avg": "Rad_SWin_Avg",
+             "IRSky_Avg": "Rad_LWin_Avg"}
+    head, rest = toa5_text(w).split("\r\n", 2)[1], toa5_text(w).split("\r\n", 2)
+    for old, new in names.items():
+        head = head.replace(f'"{old}"', f'"{new}"')
+    table = parse_weather_table("\r\n".join([rest[0], head, rest[2]]))
+    assert {q: c.column for q, c in table.columns.items() if q != "rain_mm"} == {
+        "air_temp_c": "AirT_C_Avg", "rh_pct": "RelHumid", "pressure_hpa": "BP_mbar_Avg",
+        "wind_ms": "WindSpd_m_s_Avg", "solar_wm2": "Rad_SWin_Avg", "sky_lw_wm2": "Rad_LWin_Avg"}
+    for q in ("air_temp_c", "rh_pct", "pressure_hpa", "wind_ms", "solar_wm2", "sky_lw_wm2"):
+        np.testing.assert_allclose(getattr(table.weather, q), getattr(w, q), rtol=1e-5)
+
+
 @settings(max_examples=60, deadline=None)
 @given(st.permutations(list(range(7))))
 def test_property_columns_go_by_name_never_by_position(order):
