@@ -12,6 +12,7 @@ from pathlib import Path
 import numpy as np
 
 from clearfast_gis.detection.features import AnomalyFeatures
+from clearfast_gis.detection.likelihood import screen_and_rank
 from clearfast_gis.detection.markers import MarkerMatch, markers_in_mosaics, split_markers
 from clearfast_gis.detection.voting import detect_on_mosaics
 from clearfast_gis.export.cog import read_mosaic
@@ -151,8 +152,10 @@ def write_products(c: RunContext) -> dict:
                            char.soil_alpha_sigma_m2s, list(char.notes), det.markers, char.day)
     fixq = fix_quality_summary(read.ctx)
     lon = float(survey.manifest["site"]["longitude_deg"])
-    records = suspect_records(anomalies, det.times_s, lon, fixq["worst_during_frames"],
-                              survey.manifest["survey_id"])
+    records = screen_and_rank(suspect_records(anomalies, det.times_s, lon,
+                                              fixq["worst_during_frames"],
+                                              survey.manifest["survey_id"]),
+                              len(det.times_s))
     timings = {k: v["wall_s"] for k, v in c.meter.stages.items()}
     manifest = write_anomaly_products(c.products, read.ctx, survey, anomalies, records,
                                       det.stack, det.times_s, det.transform, read.epsg,

@@ -137,27 +137,36 @@ def write_anomaly_products(products: Path, ctx, survey, anomalies, records: list
     """
     import geopandas as gpd
 
+    from clearfast_gis.detection.likelihood import likelihood_model_id
+    from clearfast_gis.evaluation.operating import expected_operating_curve
     from clearfast_gis.export import default_styles, suspects_frame, write_geopackage
     from clearfast_gis.report import ReportData, write_report
-    from clearfast_gis.report.figures import ContrastCurves, mosaic_panel_png
+    from clearfast_gis.report.figures import ContrastCurves, mosaic_panel_png, operating_curve_png
 
     crs = f"EPSG:{epsg}"
     pixel = abs(transform.a)
     outlines = label_outlines(anomalies.labels, transform)
-    suspects = suspects_frame(records, epsg, products / "anomalies.gpkg")
+    every = suspects_frame(records, epsg, products / "anomalies.gpkg")
+    ranked = sorted((r for r in records if r.get("set_aside_reason") is None),
+                    key=lambda r: r["priority"])
+    suspects = suspects_frame(ranked, epsg, products / "anomalies.gpkg")
+    candidates = suspects_frame([r for r in records if r.get("set_aside_reason") is not None],
+                                epsg, products / "anomalies.gpkg")
     ids = [f.id for f in anomalies.features]
     outline_geoms = [outlines.get(i) for i in ids]
     anomalies_layer = gpd.GeoDataFrame(
-        suspects.drop(columns="geometry").reset_index(drop=True),
+        every.drop(columns="geometry").reset_index(drop=True),
         geometry=gpd.GeoSeries(outline_geoms, crs=crs), crs=crs)
     valid = np.any(np.isfinite(stack[:, 0]), axis=0)
+    footprint_m2 = float(valid.sum() * pixel * pixel)
+    curve = expected_operating_curve(np.array([r["p_mine"] for r in ranked]), footprint_m2)
     footprint = gpd.GeoDataFrame(
         {"survey_id": [survey.manifest["survey_id"]],
-         "area_m2": [float(valid.sum() * pixel * pixel)],
+         "area_m2": [footprint_m2],
          "n_scans": [int(stack.shape[0])]},
         geometry=gpd.GeoSeries([footprint_polygon(valid, transform, 2 * pixel)], crs=crs),
         crs=crs)
-    layers = {"anomalies": anomalies_layer, "suspects": suspects,
+    layers = {"anomalies": anomalies_layer, "suspects": suspects, "candidates": candidates,
               "markers": _markers_frame(survey, epsg, anomalies.markers), "footprint": footprint}
     write_geopackage(products / "anomalies.gpkg", layers, default_styles(layers),
                      timestamp_s=float(survey.end_s))
@@ -223,8 +232,10 @@ def write_anomaly_products(products: Path, ctx, survey, anomalies, records: list
         ("thermal contrast of the day (model of the logged weather, 10 cm AP mine)", day_fact),
     ]
     data = ReportData(survey.manifest["survey_id"], survey.manifest["site"].get("name", ""),
-                      epsg, float(times_s.min()), float(times_s.max()), records, overview,
-                      curves, facts, warnings, dict(timings), options.as_dict())
+                      epsg, float(times_s.min()), float(times_s.max()), ranked, overview,
+                      curves, facts, warnings, dict(timings), options.as_dict(),
+                      candidates=[r for r in records if r.get("set_aside_reason") is not None],
+                      operating_curve=curve, operating_png=operating_curve_png(curve))
     write_report(products, data)
 
     manifest = base_manifest(survey, epsg, options, scan_records, fixq)
@@ -233,6 +244,9 @@ def write_anomaly_products(products: Path, ctx, survey, anomalies, records: list
                            "rms_offset_m": _marker_rms_m(anomalies.markers)}
     if anomalies.day is not None:
         manifest["day_contrast"] = anomalies.day.as_dict()
+    manifest["suspects"] = {"n_suspects": len(ranked), "n_candidates": len(records) - len(ranked),
+                            "likelihood_model": likelihood_model_id(),
+                            "operating_curve": curve}
     manifest["products"] = {"anomalies": "anomalies.gpkg", "report": "report.html",
                             "mosaics": "mosaics/", "footprint": "footprint.geojson"}
     return manifest
