@@ -76,7 +76,7 @@ def test_values_with_units_and_precision(products, qgis_app):
     assert shown(layer, rows["A007"], "depth") == "not characterised"
     for name in ("contrast_day_k", "contrast_night_k"):
         assert shown(layer, a1, name) == f"{a1[name]:.2f}"
-    assert shown(layer, a1, "cue_confidence_pct") == f"{100 * a1['confidence']:.0f} %"
+    assert shown(layer, a1, "cue_confidence_pct") == f"{100 * a1['cue_confidence']:.0f} %"
     assert shown(layer, a1, "depth_m") == f"{a1['depth_m']:.3f}"
     assert shown(layer, a1, "short_id") == "S-001"
     assert layer.attributeDisplayName(layer.fields().indexOf("contrast_day_k")) \
