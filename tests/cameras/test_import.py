@@ -267,3 +267,28 @@ def test_blackbody_table_needs_its_log(camera_dir, demo_survey, tmp_path):
     d = _edited(camera_dir, tmp_path, lambda d: _write_blackbody_frames(d, demo_survey, 0.0))
     with pytest.raises(InvalidInput, match=r"blackbody\.csv: .*--blackbody-log"):
         import_survey(spec(d, blackbody=d / "blackbody.csv"), tmp_path / "out")
+
+
+@pytest.mark.slow
+def test_cli_import_with_blackbodies_then_process_records_camera_check(camera_dir, demo_survey,
+                                                                       tmp_path):
+    d = _edited(camera_dir, tmp_path, lambda d: _write_blackbody_frames(d, demo_survey, 0.5))
+    cli = [sys.executable, "-m", "clearfast_gis.cli.main"]
+    r = subprocess.run([*cli, "import", str(d / "camera"), "--poses", str(d / "poses.csv"),
+                        "--gnss", str(d / "gnss.nmea"), "--weather", str(d / "weather.dat"),
+                        "--soil", str(d / "soil.csv"), "--mission", str(d / "mission.json"),
+                        "--antenna-to-camera", "0,0,-0.4", "--lens", "equiangular",
+                        "--fov-deg", "24", "--ground-altitude-m", "160",
+                        "--blackbody", str(d / "blackbody.csv"),
+                        "--blackbody-log", str(d / "bb_log.csv"),
+                        "-o", str(tmp_path / "s"), "--progress", "none"],
+                       capture_output=True, text=True, timeout=300)
+    assert r.returncode == 0, r.stderr
+    r = subprocess.run([*cli, "process", str(tmp_path / "s"), "-o", str(tmp_path / "p"),
+                        "--progress", "none"], capture_output=True, text=True, timeout=600)
+    assert r.returncode == 0, r.stderr
+    check = json.loads((tmp_path / "p" / "products.json").read_text())["camera_check"]
+    assert [c["event"] for c in check] == [0, 1]
+    for c in check:  # the blackbody frames were written 0.5 K warm
+        assert c["gain"] == pytest.approx(1.0, abs=0.005)
+        assert c["offset_k"] == pytest.approx(-0.5, abs=0.01)
