@@ -31,7 +31,7 @@ def suspects_records(n: int, rng: np.random.Generator) -> list[dict]:
              "y": 3891955.0 + rng.uniform(0, 30), "area_m2": 0.05, "diameter_m": 0.25,
              "circularity": 0.8, "depth_m": 0.03, "depth_sigma_m": 0.005,
              "diffusivity_m2s": 1e-7, "status": "ok", "polarity": "hot",
-             "class_cue": cues[i % 4], "confidence": 0.7, "n_scans": 48, "fix_quality": 4}
+             "class_cue": cues[i % 4], "cue_confidence": 0.7, "n_scans": 48, "fix_quality": 4}
             for i in range(n)]
 
 

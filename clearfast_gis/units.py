@@ -11,6 +11,9 @@ ZERO_CELSIUS_K = 273.15
 STEFAN_BOLTZMANN = 5.670374419e-8
 """Stefan-Boltzmann constant, W m-2 K-4."""
 
+STANDARD_PRESSURE_HPA = 1013.25
+"""Standard sea-level pressure, hPa."""
+
 
 def c_to_k(t_c: ArrayLike) -> np.ndarray:
     """Degrees Celsius to kelvin."""

@@ -15,7 +15,9 @@ def product_files(products: Path) -> dict[str, Path]:
     out = {}
     for p in products.rglob("*"):
         rel = p.relative_to(products).as_posix()
-        if p.is_file() and not rel.startswith(".clearfast/") and not is_temporary(p.name):
+        # *.aux.xml: statistics GDAL sidecars that a viewer (QGIS) writes beside the mosaics
+        if (p.is_file() and not rel.startswith(".clearfast/") and not is_temporary(p.name)
+                and not p.name.endswith(".aux.xml")):
             out[rel] = p
     return out
 

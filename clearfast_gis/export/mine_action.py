@@ -151,8 +151,9 @@ def fix_label(quality) -> str:
 
 def mine_indications(suspects, min_likelihood: float = DEFAULT_MIN_LIKELIHOOD) -> np.ndarray:
     """Which suspects are mine indications: ``p_mine >= min_likelihood`` when the products have
-    a mine likelihood, else an AT/AP class cue. Boolean array, shape (N,)."""
-    if "p_mine" in suspects:
+    a mine likelihood (a ``p_mine`` column with values), else an AT/AP class cue. Boolean
+    array, shape (N,)."""
+    if "p_mine" in suspects and suspects["p_mine"].notna().any():
         p = suspects["p_mine"].to_numpy(np.float64)
         return np.isfinite(p) & (p >= float(min_likelihood))
     return np.isin(np.asarray([str(c) for c in suspects["class_cue"]]), MINE_CUES)

@@ -67,7 +67,7 @@ def suspect_records(anomalies: AnomalySet, times_s: np.ndarray, longitude_deg: f
             "diffusivity_sigma_m2s": inv.alpha_sigma_m2s if inv else None,
             "status": inv.status if inv else "not_characterised",
             "polarity": _daytime_sign(f.polarity, day, f.contrast_k),
-            "diurnal_behaviour": f.polarity, "class_cue": cue, "confidence": float(conf),
+            "diurnal_behaviour": f.polarity, "class_cue": cue, "cue_confidence": float(conf),
             "n_scans": int(f.n_scans), "contrast_day_k": day, "contrast_night_k": night,
             "fix_quality": fix_quality, "figure": figure_name(aid),
             "contrast_series": {"time_utc": [format_utc(t) for t in times_s],

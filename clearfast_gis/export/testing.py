@@ -164,7 +164,7 @@ def make_demo_products(root: str | os.PathLike, n_scans: int = 4, pixel_size_m: 
             else 0.2 * obj.diffusivity_m2s,
             "status": obj.status, "polarity": "hot" if obj.amplitude_k > 0 else "cold",
             "class_cue": obj.class_cue,
-            "confidence": float(np.clip(0.4 + 0.25 * abs(obj.amplitude_k), 0.0, 0.99)),
+            "cue_confidence": float(np.clip(0.4 + 0.25 * abs(obj.amplitude_k), 0.0, 0.99)),
             "n_scans": n_scans, "contrast_day_k": day, "contrast_night_k": night,
             "fix_quality": obj.fix_quality, "figure": figure,
             "contrast_series": contrast_series_text([s["time_utc"] for s in scans], contrast),

@@ -12,6 +12,7 @@ from pathlib import Path
 import numpy as np
 
 from clearfast_gis.detection.features import AnomalyFeatures
+from clearfast_gis.detection.likelihood import screen_and_rank
 from clearfast_gis.detection.markers import MarkerMatch, markers_in_mosaics, split_markers
 from clearfast_gis.detection.voting import detect_on_mosaics
 from clearfast_gis.export.cog import read_mosaic
@@ -24,6 +25,7 @@ from clearfast_gis.pipeline.scanjob import scan_part
 from clearfast_gis.pipeline.stages import Characterisation, Detection, RunContext
 from clearfast_gis.pipeline.state import StageState, mosaic_rel
 from clearfast_gis.thermal import Inversion
+from clearfast_gis.thermal.daycontrast import DayContrast, contrast_noise_k, day_contrast
 from clearfast_gis.thermal.sitesoil import characterise, site_soil
 
 
@@ -45,6 +47,8 @@ class AnomalySet:
         What the characterisation had to skip, and why.
     markers : list of MarkerMatch
         Known markers found among the anomalies (removed from ``features``).
+    day : DayContrast or None
+        How much contrast the day gave (the thermal model of the logs), when characterised.
     """
 
     labels: np.ndarray
@@ -54,6 +58,7 @@ class AnomalySet:
     soil_alpha_sigma_m2s: float = math.nan
     notes: list[str] = dataclasses.field(default_factory=list)
     markers: list[MarkerMatch] = dataclasses.field(default_factory=list)
+    day: DayContrast | None = None
 
 
 def _load_stack(products: Path, scans: list[int]) -> tuple[np.ndarray, object]:
@@ -109,6 +114,7 @@ def detect(c: RunContext) -> Detection:
 def characterise_suspects(c: RunContext) -> Characterisation:
     """The ``characterisation`` stage: the site's soil, then depth and diffusivity of every
     suspect with the thermal model."""
+    from clearfast_gis.detection.clutter import background_clutter_k
     from clearfast_gis.thermal import forcing_from_weather
 
     det = c[stages.DETECTION]
@@ -124,7 +130,12 @@ def characterise_suspects(c: RunContext) -> Characterisation:
     background = np.array([np.nanmedian(img[outside]) for img in det.stack[:, 0]])
     soil, alpha, sigma = site_soil(logs.soil, forcing, det.times_s, background)
     inversions = characterise(det.features, det.times_s, forcing, soil, progress=c.progress)
-    return Characterisation(inversions, alpha, sigma)
+    site = ctx.survey.manifest["site"]
+    noise = contrast_noise_k(inversions, ctx.survey, background_clutter_k(
+        det.stack[:, 0], det.labels, c[stages.READ].grid.pixel_size))
+    day = day_contrast(forcing, soil, det.times_s, noise, float(site["latitude_deg"]),
+                       float(site["longitude_deg"]))
+    return Characterisation(inversions, alpha, sigma, day=day)
 
 
 def write_products(c: RunContext) -> dict:
@@ -138,11 +149,13 @@ def write_products(c: RunContext) -> dict:
     read = c[stages.READ]
     survey = read.ctx.survey
     anomalies = AnomalySet(det.labels, det.features, char.inversions, char.soil_alpha_m2s,
-                           char.soil_alpha_sigma_m2s, list(char.notes), det.markers)
+                           char.soil_alpha_sigma_m2s, list(char.notes), det.markers, char.day)
     fixq = fix_quality_summary(read.ctx)
     lon = float(survey.manifest["site"]["longitude_deg"])
-    records = suspect_records(anomalies, det.times_s, lon, fixq["worst_during_frames"],
-                              survey.manifest["survey_id"])
+    records = screen_and_rank(suspect_records(anomalies, det.times_s, lon,
+                                              fixq["worst_during_frames"],
+                                              survey.manifest["survey_id"]),
+                              len(det.times_s))
     timings = {k: v["wall_s"] for k, v in c.meter.stages.items()}
     manifest = write_anomaly_products(c.products, read.ctx, survey, anomalies, records,
                                       det.stack, det.times_s, det.transform, read.epsg,

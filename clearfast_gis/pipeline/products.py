@@ -137,27 +137,36 @@ def write_anomaly_products(products: Path, ctx, survey, anomalies, records: list
     """
     import geopandas as gpd
 
+    from clearfast_gis.detection.likelihood import likelihood_model_id
+    from clearfast_gis.evaluation.operating import expected_operating_curve
     from clearfast_gis.export import default_styles, suspects_frame, write_geopackage
     from clearfast_gis.report import ReportData, write_report
-    from clearfast_gis.report.figures import ContrastCurves, mosaic_panel_png
+    from clearfast_gis.report.figures import ContrastCurves, mosaic_panel_png, operating_curve_png
 
     crs = f"EPSG:{epsg}"
     pixel = abs(transform.a)
     outlines = label_outlines(anomalies.labels, transform)
-    suspects = suspects_frame(records, epsg, products / "anomalies.gpkg")
+    every = suspects_frame(records, epsg, products / "anomalies.gpkg")
+    ranked = sorted((r for r in records if r.get("set_aside_reason") is None),
+                    key=lambda r: r["priority"])
+    suspects = suspects_frame(ranked, epsg, products / "anomalies.gpkg")
+    candidates = suspects_frame([r for r in records if r.get("set_aside_reason") is not None],
+                                epsg, products / "anomalies.gpkg")
     ids = [f.id for f in anomalies.features]
     outline_geoms = [outlines.get(i) for i in ids]
     anomalies_layer = gpd.GeoDataFrame(
-        suspects.drop(columns="geometry").reset_index(drop=True),
+        every.drop(columns="geometry").reset_index(drop=True),
         geometry=gpd.GeoSeries(outline_geoms, crs=crs), crs=crs)
     valid = np.any(np.isfinite(stack[:, 0]), axis=0)
+    footprint_m2 = float(valid.sum() * pixel * pixel)
+    curve = expected_operating_curve(np.array([r["p_mine"] for r in ranked]), footprint_m2)
     footprint = gpd.GeoDataFrame(
         {"survey_id": [survey.manifest["survey_id"]],
-         "area_m2": [float(valid.sum() * pixel * pixel)],
+         "area_m2": [footprint_m2],
          "n_scans": [int(stack.shape[0])]},
         geometry=gpd.GeoSeries([footprint_polygon(valid, transform, 2 * pixel)], crs=crs),
         crs=crs)
-    layers = {"anomalies": anomalies_layer, "suspects": suspects,
+    layers = {"anomalies": anomalies_layer, "suspects": suspects, "candidates": candidates,
               "markers": _markers_frame(survey, epsg, anomalies.markers), "footprint": footprint}
     write_geopackage(products / "anomalies.gpkg", layers, default_styles(layers),
                      timestamp_s=float(survey.end_s))
@@ -203,6 +212,9 @@ def write_anomaly_products(products: Path, ctx, survey, anomalies, records: list
             f"RTK-DGPS not fixed (quality != 4) for {100 * (1 - fixq['rtk_fixed_share']):.1f} "
             "% of the frames: positions there are degraded")
     warnings.extend(anomalies.notes)
+    day_fact = day_contrast_text(anomalies.day)
+    if anomalies.day is not None and weak_day(anomalies.day):
+        warnings.append(f"low thermal contrast: {day_fact}")
     facts = [
         ("frames", str(len(survey.frames))), ("scans", str(stack.shape[0])),
         ("positions per scan", str(len(survey.positions))),
@@ -217,19 +229,47 @@ def write_anomaly_products(products: Path, ctx, survey, anomalies, records: list
         ("soil diffusivity (thermocouples)",
          f"{anomalies.soil_alpha_m2s:.2e} ± {anomalies.soil_alpha_sigma_m2s:.1e} m²/s"
          if math.isfinite(anomalies.soil_alpha_m2s) else "n/a"),
+        ("thermal contrast of the day (model of the logged weather, 10 cm AP mine)", day_fact),
     ]
     data = ReportData(survey.manifest["survey_id"], survey.manifest["site"].get("name", ""),
-                      epsg, float(times_s.min()), float(times_s.max()), records, overview,
-                      curves, facts, warnings, dict(timings), options.as_dict())
+                      epsg, float(times_s.min()), float(times_s.max()), ranked, overview,
+                      curves, facts, warnings, dict(timings), options.as_dict(),
+                      candidates=[r for r in records if r.get("set_aside_reason") is not None],
+                      operating_curve=curve, operating_png=operating_curve_png(curve))
     write_report(products, data)
 
     manifest = base_manifest(survey, epsg, options, scan_records, fixq)
     manifest["warnings"] = warnings  # input problems processed through (gaps, missing frames)
     manifest["markers"] = {"found": len(anomalies.markers),
                            "rms_offset_m": _marker_rms_m(anomalies.markers)}
+    if anomalies.day is not None:
+        manifest["day_contrast"] = anomalies.day.as_dict()
+    manifest["suspects"] = {"n_suspects": len(ranked), "n_candidates": len(records) - len(ranked),
+                            "likelihood_model": likelihood_model_id(),
+                            "operating_curve": curve}
     manifest["products"] = {"anomalies": "anomalies.gpkg", "report": "report.html",
                             "mosaics": "mosaics/", "footprint": "footprint.geojson"}
     return manifest
+
+
+def weak_day(day) -> bool:
+    """True when a mine 5 cm deep would not show on the day (contrast < 3 noise sigmas)."""
+    return not (day.deepest_showing_m >= 0.05)
+
+
+def day_contrast_text(day) -> str:
+    """One line on the day's contrast for the report (``n/a`` without characterisation)."""
+    if day is None:
+        return "n/a (not characterised)"
+    peaks = ", ".join(f"{day.contrast_at(d):.2f} K at {100 * d:.0f} cm" for d in (0.01, 0.05, 0.10))
+    deep = day.deepest_showing_m
+    shows = (f"mines show down to about {100 * deep:.0f} cm" if math.isfinite(deep)
+             else "not even a mine at 1 cm shows")
+    sky = ("" if not math.isfinite(day.clear_sky_index)
+           else f"; sun {100 * day.clear_sky_index:.0f} % of a clear sky")
+    rain = f"; rain {day.rain_mm:.1f} mm" if day.rain_mm > 0 else ""
+    return (f"peak {peaks} against a noise of {day.noise_k:.2f} K: {shows} "
+            f"(3 noise sigmas in a quarter of the scans){sky}{rain}")
 
 
 def base_manifest(survey, epsg: int, options, scan_records: dict[int, dict], fixq: dict

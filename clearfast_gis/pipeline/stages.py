@@ -199,12 +199,14 @@ class Detection:
 @dataclass(frozen=True)
 class Characterisation:
     """``characterisation``: depth and diffusivity per anomaly id, the site's soil
-    diffusivity (m2/s) and its 1-sigma, and what was skipped."""
+    diffusivity (m2/s) and its 1-sigma, what was skipped, and how much contrast the day
+    gave (a :class:`~clearfast_gis.thermal.daycontrast.DayContrast`, or None)."""
 
     inversions: dict = field(default_factory=dict)
     soil_alpha_m2s: float = math.nan
     soil_alpha_sigma_m2s: float = math.nan
     notes: tuple[str, ...] = ()
+    day: object = None
 
 
 @dataclass(frozen=True)

@@ -37,13 +37,13 @@ from numpy.typing import ArrayLike
 
 from clearfast_gis.errors import InvalidInput
 from clearfast_gis.radiometry.table import BandTable
+from clearfast_gis.units import STANDARD_PRESSURE_HPA
 
 FLIR_X = 1.9
 FLIR_A1_PER_SQRT_M = 0.006569
 FLIR_A2_PER_SQRT_M = 0.01262
 FLIR_B1 = -0.002276
 FLIR_B2 = -0.00667
-STANDARD_PRESSURE_HPA = 1013.25
 LW_WINDOW_UM = (7.5, 14.0)
 """Band limits (um) inside which the long-wave constants apply."""
 MAX_PATH_M = 1000.0

@@ -134,3 +134,31 @@ def contrast_curve_png(times_s: np.ndarray, contrast_k: np.ndarray,
     """One anomaly's centre-minus-background contrast over the scans, with the model fit
     (see :class:`ContrastCurves` for many)."""
     return ContrastCurves().png(times_s, contrast_k, model_times_s, model_k, title)
+
+
+def operating_curve_png(curve: dict) -> bytes:
+    """The planner's expected operating curve (``evaluation.operating.expected_operating_curve``):
+    expected mines found against expected false alarms per m2 going down the ranked list, with
+    the priority of every fifth suspect marked; PNG bytes."""
+    from matplotlib.figure import Figure
+
+    fig = Figure(figsize=(5.2, 3.4))
+    ax = fig.add_subplot()
+    fa = np.concatenate([[0.0], np.asarray(curve["expected_false_alarms_per_m2"], float)])
+    found = np.concatenate([[0.0], np.asarray(curve["expected_mines"], float)])
+    ax.step(fa, found, where="post", color="#c0392b", lw=1.4)
+    for k in range(4, len(fa) - 1, 5):
+        ax.annotate(str(k + 1), (fa[k + 1], found[k + 1]), fontsize=6, color="#555",
+                    xytext=(2, -8), textcoords="offset points")
+    ax.axvline(0.01, color="grey", lw=0.6, ls="--")
+    ax.text(0.01, 0.02, " 0.01 per m²", transform=ax.get_xaxis_transform(), fontsize=7,
+            color="grey")
+    ax.set_xlabel("expected false alarms per m² (cumulative)")
+    ax.set_ylabel("expected mines found")
+    ax.set_title("going down the list by p_mine (numbers: priority)", fontsize=9)
+    ax.set_xlim(left=0)
+    ax.set_ylim(bottom=0)
+    fig.subplots_adjust(left=0.14, right=0.97, bottom=0.16, top=0.9)
+    buf = io.BytesIO()
+    fig.savefig(buf, format="png", dpi=110)
+    return buf.getvalue()

@@ -15,12 +15,13 @@ CREDIT = ("Processing: clearfast-gis {version}. Method: CLEARFAST stand-off ther
           "(morphological anomaly detection on the diurnal sequence, thermal-model inversion).")
 
 TABLE_COLUMNS = [
+    ("priority", "Priority", "{}"), ("p_mine", "p_mine", "{:.2f}"),
     ("anomaly_id", "ID", "{}"), ("x", "X (m)", "{:.2f}"), ("y", "Y (m)", "{:.2f}"),
     ("area_m2", "Area (m²)", "{:.4f}"), ("diameter_m", "Diameter (m)", "{:.3f}"),
     ("depth_m", "Depth (cm)", "cm"), ("diffusivity_m2s", "Alpha (m²/s)", "{:.2e}"),
     ("circularity", "Circularity", "{:.3f}"), ("polarity", "Polarity", "{}"),
     ("status", "Status", "{}"), ("class_cue", "Class cue", "{}"),
-    ("confidence", "Confidence", "{:.2f}"), ("n_scans", "Scans", "{}"),
+    ("cue_confidence", "Cue confidence", "{:.2f}"), ("n_scans", "Scans", "{}"),
 ]
 
 
@@ -36,7 +37,7 @@ class ReportData:
     start_s, end_s : float
         Survey time span (UTC epoch seconds).
     suspects : list of dict
-        One record per anomaly with the ``anomalies.gpkg`` suspects fields.
+        One record per suspect with the ``anomalies.gpkg`` suspects fields, in priority order.
     overview_png : bytes
         The Fig. 7-like panel (day mosaic, detections, night mosaic).
     curves_png : dict[str, bytes]
@@ -49,6 +50,12 @@ class ReportData:
         Wall time per stage.
     parameters : dict
         Processing parameters.
+    candidates : list of dict
+        Detections set aside (``set_aside_reason``), the ``candidates`` layer.
+    operating_curve : dict
+        Expected operating curve of the ranked list (``products.json``).
+    operating_png : bytes
+        Its figure.
     """
 
     survey_id: str
@@ -63,6 +70,9 @@ class ReportData:
     warnings: list[str] = field(default_factory=list)
     timings_s: dict[str, float] = field(default_factory=dict)
     parameters: dict = field(default_factory=dict)
+    candidates: list[dict] = field(default_factory=list)
+    operating_curve: dict = field(default_factory=dict)
+    operating_png: bytes = b""
 
 
 def figure_name(anomaly_id: str) -> str:
@@ -102,6 +112,14 @@ def render_html(data: ReportData) -> str:
         f"<figure><img src='{figure_name(a)}' alt='contrast {esc(a)}'>"
         f"<figcaption>{esc(a)}</figcaption></figure>" for a in data.curves_png)
     n_mine = sum(1 for r in data.suspects if r.get("class_cue") in ("at_mine", "ap_mine"))
+    expected = sum(float(r.get("p_mine") or 0.0) for r in data.suspects)
+    aside: dict[str, int] = {}
+    for r in data.candidates:
+        why = str(r.get("set_aside_reason", "")).split(",")[0].split(" ", 1)[0]
+        aside[why] = aside.get(why, 0) + 1
+    aside_txt = ", ".join(f"{n} {k}" for k, n in sorted(aside.items())) or "none"
+    curve_img = ("<img src='figures/operating_curve.png' alt='operating curve'>"
+                 if data.operating_png else "")
     return f"""<!DOCTYPE html>
 <html lang="en"><head><meta charset="utf-8">
 <title>CLEARFAST survey {esc(data.survey_id)}</title>
@@ -117,10 +135,17 @@ figure {{ display: inline-block; margin: 0.5em; }}
 <p>{esc(data.site_name)} · {esc(format_utc(data.start_s, 'minutes'))} to
 {esc(format_utc(data.end_s, 'minutes'))} UTC · CRS EPSG:{data.epsg}</p>
 <p class="note">Every suspect below is an <b>indication</b> from indirect (thermal) evidence,
-never a confirmed hazard: {len(data.suspects)} anomalies, {n_mine} cued as mines.</p>
+never a confirmed hazard: {len(data.suspects)} suspects ({n_mine} cued as mines; about
+{expected:.1f} mines expected from their p_mine), ranked by mine likelihood.
+{len(data.candidates)} further detections cannot be mines and are set aside in the
+<code>candidates</code> layer (by blob, footprint or scans: {esc(aside_txt)}).</p>
 <h2>Mosaics and detections</h2>
 <img src="figures/overview.png" alt="mosaics and detections" style="max-width:100%">
-<h2>Detected anomalies</h2>
+<h2>Operating curve</h2>
+<p>Clearing the suspects in priority order: expected mines found against expected false
+alarms per m² (from the calibrated p_mine; docs/likelihood.md).</p>
+{curve_img}
+<h2>Suspects in priority order</h2>
 <table><tr>{head}</tr>{''.join(rows)}</table>
 <h2>Warnings</h2><ul>{warns}</ul>
 <h2>Survey and processing</h2><table>{facts}</table>
@@ -136,6 +161,8 @@ def write_report(folder: str | Path, data: ReportData) -> Path:
     """Write ``report.html`` and its figures into ``folder`` (atomically, file by file)."""
     folder = Path(folder)
     write_bytes(folder / "figures" / "overview.png", data.overview_png)
+    if data.operating_png:
+        write_bytes(folder / "figures" / "operating_curve.png", data.operating_png)
     for aid, png in data.curves_png.items():
         write_bytes(folder / figure_name(aid), png)
     return write_text(folder / "report.html", render_html(data))

@@ -50,6 +50,46 @@ class ObjectCounts:
 
 
 @dataclass(frozen=True)
+class RainEvent:
+    """A shower: start (UTC epoch seconds), duration (s) and total (mm = kg m-2)."""
+
+    start_s: float
+    duration_s: float
+    total_mm: float
+
+
+@dataclass(frozen=True)
+class WeatherSpec:
+    """The twin's weather (:mod:`clearfast_gis.simulate.weather`).
+
+    Attributes
+    ----------
+    cloud_cover : tuple of (hours_after_start, fraction)
+        Cloud cover fraction 0..1, linear between the pairs (one pair: constant); empty: clear.
+    rain : tuple of RainEvent
+        Showers.
+    wind_scale : float
+        Multiplier on the clear day's wind.
+    gusts : float
+        Relative standard deviation of the 1-minute gust factor (0: none).
+    air_temp_c : (float, float)
+        Daily minimum and maximum air temperature, degrees C.
+    rh_pct : (float, float)
+        Relative humidity at the warmest and at the coolest time, percent.
+    file : str or None
+        A measured weather table (TOA5) that replaces the modelled day.
+    """
+
+    cloud_cover: tuple[tuple[float, float], ...] = ()
+    rain: tuple[RainEvent, ...] = ()
+    wind_scale: float = 1.0
+    gusts: float = 0.0
+    air_temp_c: tuple[float, float] = (10.0, 23.0)
+    rh_pct: tuple[float, float] = (60.0, 70.0)
+    file: str | None = None
+
+
+@dataclass(frozen=True)
 class SimConfig:
     """Everything that shapes one simulated survey.
 
@@ -57,6 +97,11 @@ class SimConfig:
     is the rectangle ``[0, area_width_m] x [0, area_length_m]`` in *local* metres (x east,
     y north) whose south-west corner sits at ``origin_m`` in the survey CRS. The lift stands
     ``lift_offset_m`` south of the area's south edge, centred on it (beside the long side).
+
+    The ground: ``soil_type`` None is the default sand mixture without evaporation (the
+    figures of BENCHMARKS.md up to issue 22); a type of
+    :data:`clearfast_gis.thermal.soils.SOIL_TYPES` with ``soil_moisture`` (degree of
+    saturation) gives an evaporating soil; ``vegetation_cover`` 0..1 a uniform grass canopy.
     """
 
     name: str = "demo"
@@ -94,6 +139,10 @@ class SimConfig:
     drift_roll_deg: float = -3.0
     drift_pitch_deg: float = 1.5
     drift_yaw_deg: float = 2.5
+    weather: WeatherSpec = field(default_factory=WeatherSpec)
+    soil_type: str | None = None
+    soil_moisture: float = 0.5
+    vegetation_cover: float = 0.0
 
     @property
     def width(self) -> int:

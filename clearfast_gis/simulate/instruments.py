@@ -31,8 +31,13 @@ def station_pressure_hpa(time_s: np.ndarray, altitude_m: float) -> np.ndarray:
 
 def weather_log(time_s: np.ndarray, air_temp_k: np.ndarray, rh_pct: np.ndarray,
                 pressure_hpa: np.ndarray, wind_ms: np.ndarray, solar_wm2: np.ndarray,
-                sky_lw_wm2: np.ndarray, rng: np.random.Generator) -> WeatherLog:
-    """The weather station's 1-minute records (true values plus sensor noise), all (T,)."""
+                sky_lw_wm2: np.ndarray, rng: np.random.Generator,
+                rain_mm_h: np.ndarray | None = None) -> WeatherLog:
+    """The weather station's 1-minute records (true values plus sensor noise), all (T,).
+
+    ``rain_mm_h`` (the true rain rate, mm h-1) gives the gauge's totals per record (0.1 mm
+    tipping-bucket resolution, accumulated so that no rain is lost).
+    """
     n = len(time_s)
 
     def noisy(x: np.ndarray, sigma: np.ndarray | float) -> np.ndarray:
@@ -47,8 +52,22 @@ def weather_log(time_s: np.ndarray, air_temp_k: np.ndarray, rh_pct: np.ndarray,
         wind_ms=np.round(np.clip(noisy(wind_ms, 0.1), 0.0, None), 2),
         solar_wm2=np.round(solar, 1),
         sky_lw_wm2=np.round(noisy(sky_lw_wm2, 3.0), 1),
-        rain_mm=np.zeros(n),
+        rain_mm=gauge_totals_mm(time_s, rain_mm_h),
     )
+
+
+def gauge_totals_mm(time_s: np.ndarray, rain_mm_h: np.ndarray | None,
+                    bucket_mm: float = 0.1) -> np.ndarray:
+    """Tipping-bucket totals per record (T,), mm: the rain since the previous record in whole
+    tips, the remainder carried over."""
+    t = np.asarray(time_s, float)
+    if rain_mm_h is None:
+        return np.zeros(t.size)
+    rate = np.asarray(rain_mm_h, float)
+    dt_h = np.diff(t, prepend=t[0] - (t[1] - t[0] if t.size > 1 else 60.0)) / 3600.0
+    cum = np.cumsum(rate * dt_h)
+    tips = np.floor(cum / bucket_mm + 1e-9)
+    return np.round(np.diff(tips, prepend=0.0) * bucket_mm, 1)
 
 
 def soil_log(time_s: np.ndarray, depth_m: np.ndarray, temp_k: np.ndarray,

@@ -135,7 +135,7 @@ def simulate_survey(out_dir: str | Path, config: SimConfig, seed: int = 0, drift
 
     # thermal truth at the scan times
     t_stage = clock()
-    truth_t = thermal_truth(twin.forcing, scan_mid, objs)
+    truth_t = thermal_truth(twin.forcing, scan_mid, objs, twin.ground)
     timings["thermal"] = clock() - t_stage
     rows_a, cols_a, area_grid = twin.area_rows, twin.area_cols, twin.area_grid
     tables = twin.tables

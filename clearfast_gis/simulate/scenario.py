@@ -15,8 +15,9 @@ from pathlib import Path
 import jsonschema
 
 from clearfast_gis.errors import InvalidInput
-from clearfast_gis.simulate.config import SimConfig, preset
+from clearfast_gis.simulate.config import RainEvent, SimConfig, WeatherSpec, preset
 from clearfast_gis.simulate.objects import KINDS, SceneObject, default_height_m
+from clearfast_gis.timeutil import format_utc, parse_utc
 
 #: Default diameters of listed objects whose scenario entry gives none, metres.
 DEFAULT_DIAMETER_M = {"at_mine": 0.337, "ap_mine": 0.104, "stone": 0.15, "metal": 0.08,
@@ -112,6 +113,13 @@ def parse_scenario(doc: dict, path: str | Path | None = None,
         upd["netd_k"] = float(cam["netd_k"])
     if "grid_cell_m" in doc:
         upd["grid_cell_m"] = float(doc["grid_cell_m"])
+    if "weather" in doc:
+        upd["weather"] = _parse_weather(doc["weather"], cfg.weather, path)
+    if "soil" in doc:
+        upd["soil_type"] = doc["soil"]["type"]
+        upd["soil_moisture"] = float(doc["soil"].get("moisture", cfg.soil_moisture))
+    if "vegetation_cover" in doc:
+        upd["vegetation_cover"] = float(doc["vegetation_cover"])
     cfg = replace(cfg, **upd)
     objects = None
     if "objects" in doc:
@@ -121,6 +129,40 @@ def parse_scenario(doc: dict, path: str | Path | None = None,
         if dup:
             raise InvalidInput(f"duplicate object id {sorted(dup)[0]!r}", path, "objects")
     return Scenario(config=cfg, objects=objects, draw_clutter=bool(doc.get("draw_clutter", False)))
+
+
+def _parse_weather(w: dict, base: WeatherSpec, path) -> WeatherSpec:
+    """The ``weather`` block (already schema-checked) applied to ``base``."""
+    upd: dict = {}
+    cover = w.get("cloud_cover")
+    if isinstance(cover, int | float):
+        upd["cloud_cover"] = ((0.0, float(cover)),)
+    elif cover is not None:
+        hours = [float(p[0]) for p in cover]
+        if any(b <= a for a, b in zip(hours, hours[1:], strict=False)):
+            raise InvalidInput("hours must increase", path, "weather.cloud_cover")
+        upd["cloud_cover"] = tuple((float(h), float(f)) for h, f in cover)
+    if "rain" in w:
+        upd["rain"] = tuple(RainEvent(parse_utc(r["start_utc"]), float(r["duration_h"]) * 3600.0,
+                                      float(r["total_mm"])) for r in w["rain"])
+    for key in ("wind_scale", "gusts"):
+        if key in w:
+            upd[key] = float(w[key])
+    for key in ("air_temp_c", "rh_pct"):
+        if key in w:
+            lo, hi = (float(v) for v in w[key])
+            if lo > hi:
+                raise InvalidInput("the first value must not exceed the second", path,
+                                   f"weather.{key}")
+            upd[key] = (lo, hi)
+    if "file" in w:
+        f = Path(w["file"])
+        if not f.is_absolute() and path is not None:
+            f = Path(path).parent / f
+        if not f.is_file():
+            raise InvalidInput(f"no such file: {f}", path, "weather.file")
+        upd["file"] = str(f)
+    return replace(base, **upd)
 
 
 def _parse_object(i: int, o: dict, cfg: SimConfig, path) -> SceneObject:
@@ -160,7 +202,33 @@ def scenario_document(config: SimConfig, objects: list[SceneObject]) -> dict:
         "objects": [{"id": o.id, "kind": o.kind, "x_m": o.x_m, "y_m": o.y_m,
                      "depth_m": o.depth_m, "diameter_m": o.diameter_m,
                      **({"variant": o.variant} if o.variant else {})} for o in objects],
+        **conditions_document(config),
     }
+
+
+def conditions_document(config: SimConfig) -> dict:
+    """The scenario fields of ``config``'s weather and ground that differ from the default
+    (``weather``, ``soil``, ``vegetation_cover``)."""
+    out: dict = {}
+    w, d = config.weather, WeatherSpec()
+    weather: dict = {}
+    if w.cloud_cover:
+        weather["cloud_cover"] = [list(p) for p in w.cloud_cover]
+    if w.rain:
+        weather["rain"] = [{"start_utc": format_utc(r.start_s, "seconds"),
+                            "duration_h": r.duration_s / 3600.0, "total_mm": r.total_mm}
+                           for r in w.rain]
+    for key in ("wind_scale", "gusts", "air_temp_c", "rh_pct", "file"):
+        if getattr(w, key) != getattr(d, key):
+            value = getattr(w, key)
+            weather[key] = list(value) if isinstance(value, tuple) else value
+    if weather:
+        out["weather"] = weather
+    if config.soil_type is not None:
+        out["soil"] = {"type": config.soil_type, "moisture": config.soil_moisture}
+    if config.vegetation_cover > 0:
+        out["vegetation_cover"] = config.vegetation_cover
+    return out
 
 
 __all__ = ["KINDS", "Scenario", "load_scenario", "parse_scenario", "scenario_document",

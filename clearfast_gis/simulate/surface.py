@@ -26,10 +26,16 @@ import numpy as np
 from clearfast_gis.simulate.emissivity import band_emissivity
 from clearfast_gis.simulate.objects import SceneObject
 from clearfast_gis.simulate.scene import SceneFields
-from clearfast_gis.simulate.thin_layers import leaf_temperature_k, plate_temperature_k
+from clearfast_gis.simulate.thin_layers import (
+    LEAF_EMISSIVITY,
+    leaf_temperature_k,
+    plate_temperature_k,
+)
 from clearfast_gis.thermal.forcing import Forcing
 from clearfast_gis.thermal.forward import BuriedObject, simulate_background, simulate_object
 from clearfast_gis.thermal.materials import MATERIALS
+from clearfast_gis.thermal.soils import soil_of_type
+from clearfast_gis.units import STEFAN_BOLTZMANN
 
 #: thermal material of each object kind's body
 OBJECT_MATERIAL = {"at_mine": "tnt", "ap_mine": "tnt", "stone": "stone", "metal": "steel"}
@@ -40,15 +46,57 @@ OBJECT_SURFACE = {"at_mine": "mine_casing", "ap_mine": "mine_casing", "stone": "
 MARKER_PLATES = {"hot": (0.05, 0.95, "marker_hot"), "cold": (0.15, 0.07, "marker_cold")}
 #: lateral smoothing of the composited class temperatures, metres (Gaussian sigma)
 LATERAL_SIGMA_M = 0.01
+#: the moisture field's end-members lie this far (degree of saturation) around the site's
+MOISTURE_SPREAD = 0.1
 
 
-def soils() -> dict:
-    """The soil end-members: ``dry``, ``moist``, ``disturbed`` and the mean ``site`` soil."""
-    dry, moist = MATERIALS["dry_sand"], MATERIALS["moist_sand"]
-    site = replace(moist, name="site_sand", k_wmk=0.5 * (dry.k_wmk + moist.k_wmk),
-                   rho_c_jm3k=0.5 * (dry.rho_c_jm3k + moist.rho_c_jm3k),
-                   emissivity=0.5 * (dry.emissivity + moist.emissivity),
-                   albedo=0.5 * (dry.albedo + moist.albedo))
+@dataclass(frozen=True)
+class Ground:
+    """The twin's ground: soil end-members (:func:`soils`) and a grass cover fraction 0..1."""
+
+    soils: dict
+    vegetation_cover: float = 0.0
+
+
+def ground_of(soil_type: str | None, moisture: float, vegetation_cover: float) -> Ground:
+    """The :class:`Ground` of a config's ``soil_type``, ``soil_moisture``, ``vegetation_cover``."""
+    return Ground(soils(soil_type, moisture), float(vegetation_cover))
+
+
+def under_canopy(forcing: Forcing, cover: float) -> Forcing:
+    """The weather the soil sees under a grass canopy of cover fraction ``cover``.
+
+    The canopy intercepts that share of the sun and replaces that share of the sky by its own
+    long-wave emission, taken at air temperature (a leaf is within a few kelvin of the air);
+    wind and rain reach the soil unchanged.
+    """
+    if cover <= 0.0:
+        return forcing
+    f = float(cover)
+    air = forcing.air_temp_k
+    sky = (1.0 - f) * forcing.sky_lw_wm2 + f * LEAF_EMISSIVITY * STEFAN_BOLTZMANN * air**4
+    return Forcing(forcing.time_s, (1.0 - f) * forcing.solar_wm2, sky, air, forcing.wind_ms,
+                   forcing.rh_pct, forcing.rain_mm_h)
+
+
+def soils(soil_type: str | None = None, moisture: float = 0.5) -> dict:
+    """The soil end-members: ``dry``, ``moist``, ``disturbed`` and the ``site`` soil.
+
+    Without a ``soil_type``: dry and moist sand (no evaporation) and their mean. With one
+    (:data:`clearfast_gis.thermal.soils.SOIL_TYPES`): that soil at degree of saturation
+    ``moisture`` (the site) and ``MOISTURE_SPREAD`` drier and wetter (the end-members of the
+    moisture field), all evaporating.
+    """
+    if soil_type is not None:
+        dry = soil_of_type(soil_type, max(moisture - MOISTURE_SPREAD, 0.0))
+        moist = soil_of_type(soil_type, min(moisture + MOISTURE_SPREAD, 1.0))
+        site = soil_of_type(soil_type, moisture)
+    else:
+        dry, moist = MATERIALS["dry_sand"], MATERIALS["moist_sand"]
+        site = replace(moist, name="site_sand", k_wmk=0.5 * (dry.k_wmk + moist.k_wmk),
+                       rho_c_jm3k=0.5 * (dry.rho_c_jm3k + moist.rho_c_jm3k),
+                       emissivity=0.5 * (dry.emissivity + moist.emissivity),
+                       albedo=0.5 * (dry.albedo + moist.albedo))
     disturbed = replace(dry, name="disturbed_sand", k_wmk=0.7 * dry.k_wmk,
                         rho_c_jm3k=0.9 * dry.rho_c_jm3k, albedo=dry.albedo + 0.03)
     return {"dry": dry, "moist": moist, "disturbed": disturbed, "site": site}
@@ -59,12 +107,12 @@ def object_key(obj: SceneObject) -> tuple:
     return (obj.kind, round(obj.depth_m, 4), round(obj.diameter_m, 4), round(obj.height_m, 4))
 
 
-def object_diffusivity_m2s(obj: SceneObject) -> float:
+def object_diffusivity_m2s(obj: SceneObject, ground: Ground | None = None) -> float:
     """Thermal diffusivity of the object's material (m2/s; NaN for vegetation)."""
     if obj.kind in OBJECT_MATERIAL:
         return MATERIALS[OBJECT_MATERIAL[obj.kind]].alpha_m2s
     if obj.kind == "disturbed_soil":
-        return soils()["disturbed"].alpha_m2s
+        return (soils() if ground is None else ground.soils)["disturbed"].alpha_m2s
     if obj.kind == "marker":
         return MATERIALS["aluminium"].alpha_m2s
     return float("nan")
@@ -83,7 +131,8 @@ class ThermalTruth:
     """Surface temperatures at the scan times (S,), kelvin.
 
     ``soil_k`` maps ``dry``/``moist``/``disturbed``/``site`` to (S,); ``leaf_k``, ``plate_k``
-    (dict hot/cold) are (S,); ``objects`` maps :func:`object_key` to an :class:`ObjectProfile`.
+    (dict hot/cold) are (S,); ``objects`` maps :func:`object_key` to an :class:`ObjectProfile`;
+    ``canopy`` is the grass cover fraction over soil and buried objects.
     """
 
     time_s: np.ndarray
@@ -91,26 +140,33 @@ class ThermalTruth:
     leaf_k: np.ndarray
     plate_k: dict
     objects: dict
+    canopy: float = 0.0
 
 
 def forcing_at(forcing: Forcing, time_s: np.ndarray) -> dict[str, np.ndarray]:
     """The forcing's channels linearly interpolated to ``time_s`` (dict of arrays)."""
     t = np.asarray(time_s, float)
-    return {n: np.interp(t, forcing.time_s, getattr(forcing, n))
-            for n in ("solar_wm2", "sky_lw_wm2", "air_temp_k", "wind_ms", "rh_pct")}
+    return forcing.at(t)
 
 
-def thermal_truth(forcing: Forcing, scan_time_s: np.ndarray, objects: list[SceneObject]
-                  ) -> ThermalTruth:
-    """Run the thermal model for the backgrounds, thin layers and every distinct object."""
+def thermal_truth(forcing: Forcing, scan_time_s: np.ndarray, objects: list[SceneObject],
+                  ground: Ground | None = None) -> ThermalTruth:
+    """Run the thermal model for the backgrounds, thin layers and every distinct object.
+
+    ``ground`` (default: the sand mixture, no grass) gives the soils and the grass cover;
+    soils and objects under grass are forced by :func:`under_canopy`.
+    """
     t = np.asarray(scan_time_s, float)
-    sl = soils()
+    ground = Ground(soils()) if ground is None else ground
+    sl = ground.soils
+    open_air = forcing
+    forcing = under_canopy(forcing, ground.vegetation_cover)
     soil_k = {name: background_surface_k(soil, forcing, t) for name, soil in sl.items()}
-    f = forcing_at(forcing, t)
+    f = forcing_at(open_air, t)
     drive = (f["solar_wm2"], f["sky_lw_wm2"], f["air_temp_k"], f["wind_ms"])
-    ground = soil_k["site"]
-    leaf = leaf_temperature_k(*drive, ground)
-    plates = {v: plate_temperature_k(*drive, ground, a, e)
+    site_k = soil_k["site"]
+    leaf = leaf_temperature_k(*drive, site_k)
+    plates = {v: plate_temperature_k(*drive, site_k, a, e)
               for v, (a, e, _) in MARKER_PLATES.items()}
     runs: dict = {}
     for obj in objects:
@@ -119,7 +175,7 @@ def thermal_truth(forcing: Forcing, scan_time_s: np.ndarray, objects: list[Scene
         key = object_key(obj)
         if key not in runs:
             runs[key] = object_profile(sl["site"], obj, forcing, t)
-    return ThermalTruth(t, soil_k, leaf, plates, runs)
+    return ThermalTruth(t, soil_k, leaf, plates, runs, ground.vegetation_cover)
 
 
 def background_surface_k(soil, forcing: Forcing, time_s: np.ndarray) -> np.ndarray:
@@ -127,9 +183,12 @@ def background_surface_k(soil, forcing: Forcing, time_s: np.ndarray) -> np.ndarr
     return np.asarray(simulate_background(soil, forcing, time_s).surface_k, float)
 
 
-def soil_profile_k(forcing: Forcing, time_s: np.ndarray, depths_m: np.ndarray) -> np.ndarray:
+def soil_profile_k(forcing: Forcing, time_s: np.ndarray, depths_m: np.ndarray,
+                   ground: Ground | None = None) -> np.ndarray:
     """Temperature (T, D) of the site soil at the thermocouple depths, kelvin."""
-    run = simulate_background(soils()["site"], forcing, time_s, depths_m=depths_m)
+    ground = Ground(soils()) if ground is None else ground
+    run = simulate_background(ground.soils["site"], under_canopy(forcing, ground.vegetation_cover),
+                              time_s, depths_m=depths_m)
     return np.asarray(run.profile_k, float)
 
 
@@ -151,26 +210,34 @@ def surface_temperature_k(fields: SceneFields, truth: ThermalTruth, s: int) -> n
     dry, moist = np.float32(truth.soil_k["dry"][s]), np.float32(truth.soil_k["moist"][s])
     t = dry + m * (moist - dry)
     t += fields.disturbed * (np.float32(truth.soil_k["disturbed"][s]) - t)
+    if truth.canopy > 0:
+        t += np.float32(truth.canopy) * (np.float32(truth.leaf_k[s]) - t)
     t += fields.vegetation * (np.float32(truth.leaf_k[s]) - t)
     t += fields.marker_hot * (np.float32(truth.plate_k["hot"][s]) - t)
     t += fields.marker_cold * (np.float32(truth.plate_k["cold"][s]) - t)
     sigma = LATERAL_SIGMA_M / fields.grid.pixel_size
     t = cv2.GaussianBlur(t, (0, 0), sigmaX=sigma, borderType=cv2.BORDER_REPLICATE)
     flat = t.reshape(-1)
+    seen = np.float32(1.0 - truth.canopy)
     for fp in fields.footprints:
         prof = truth.objects[object_key(fp.obj)]
-        flat[fp.index] += np.interp(fp.r_m, prof.radii_m, prof.contrast_k[s]).astype(np.float32)
+        flat[fp.index] += seen * np.interp(fp.r_m, prof.radii_m,
+                                           prof.contrast_k[s]).astype(np.float32)
     return t
 
 
-def emissivity_map(fields: SceneFields, lambda_min_um: float, lambda_max_um: float
-                   ) -> np.ndarray:
-    """Band emissivity (H, W) float32 of the truth grid (time-invariant)."""
+def emissivity_map(fields: SceneFields, lambda_min_um: float, lambda_max_um: float,
+                   canopy: float = 0.0) -> np.ndarray:
+    """Band emissivity (H, W) float32 of the truth grid (time-invariant); ``canopy`` is the
+    grass cover over the soil and surface-laid objects."""
     def e(name: str) -> np.float32:
         return np.float32(band_emissivity(name, lambda_min_um, lambda_max_um))
 
     eps = e("dry_soil") + fields.moisture * (e("moist_soil") - e("dry_soil"))
     eps += fields.disturbed * (e("disturbed_soil") - eps)
+    grass = np.float32(canopy)
+    if canopy > 0:
+        eps += grass * (e("vegetation") - eps)
     eps += fields.vegetation * (e("vegetation") - eps)
     eps += fields.marker_hot * (e("marker_hot") - eps)
     eps += fields.marker_cold * (e("marker_cold") - eps)
@@ -178,5 +245,6 @@ def emissivity_map(fields: SceneFields, lambda_min_um: float, lambda_max_um: flo
     for fp in fields.footprints:
         if fp.obj.depth_m <= 0.0:
             inside = fp.r_m <= fp.obj.radius_m
-            flat[fp.index[inside]] = e(OBJECT_SURFACE[fp.obj.kind])
+            flat[fp.index[inside]] = (e(OBJECT_SURFACE[fp.obj.kind])
+                                      + grass * (e("vegetation") - e(OBJECT_SURFACE[fp.obj.kind])))
     return eps.astype(np.float32)

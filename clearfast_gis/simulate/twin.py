@@ -2,7 +2,8 @@
 
 :func:`build_twin` sets up everything that does not depend on when frames are taken: the
 objects, the site origin, the camera model, the lift's true motion (with the trial's drift),
-the planner's mission, the clear-sky forcing, the truth grid and its fields, band tables,
+the planner's mission, the weather (:mod:`clearfast_gis.simulate.weather`), the ground
+(soil and grass), the truth grid and its fields, band tables,
 emissivities, detectors, and the blackbody truth on the loggers' minute grid. From it:
 
 - :func:`~clearfast_gis.simulate.run.simulate_survey` renders the scheduled frames of a whole
@@ -46,20 +47,23 @@ from clearfast_gis.simulate.render import (
 from clearfast_gis.simulate.scene import GridSpec, SceneFields, build_scene
 from clearfast_gis.simulate.sky import sky_band_radiance
 from clearfast_gis.simulate.surface import (
+    Ground,
     emissivity_map,
     forcing_at,
+    ground_of,
     soil_profile_k,
 )
+from clearfast_gis.simulate.weather import site_forcing
 from clearfast_gis.survey.logs import BlackbodyLog, Markers, SoilLog
 from clearfast_gis.survey.manifest import DEFAULT_FILES
 from clearfast_gis.survey.nmea import GnssLog
 from clearfast_gis.survey.toa5 import WeatherLog
-from clearfast_gis.thermal.forcing import Forcing, clear_sky_forcing
+from clearfast_gis.thermal.forcing import Forcing
 from clearfast_gis.timeutil import format_utc, parse_utc
 
 #: independent random streams (numpy SeedSequence entropy [seed, stream])
 STREAMS = {"objects": 1, "scene": 2, "detector": 3, "lift": 4, "gnss": 5, "noise": 6,
-           "weather": 7, "soil": 8, "blackbody": 9, "camera": 10}
+           "weather": 7, "soil": 8, "blackbody": 9, "camera": 10, "gusts": 11}
 
 #: distortion of the simulated pinhole lens (k1, k2, p1, p2, k3)
 PINHOLE_DISTORTION = (-0.06, 0.01, 0.0, 0.0, 0.0)
@@ -191,6 +195,7 @@ class Twin:
     bb1_k: np.ndarray
     bb2_k: np.ndarray
     pressure_hpa: np.ndarray
+    ground: Ground
 
     @property
     def n_bands(self) -> int:
@@ -272,13 +277,14 @@ class Twin:
         fm = self.forcing_min
         return instruments.weather_log(self.t_min, fm["air_temp_k"], fm["rh_pct"],
                                        self.pressure_hpa, fm["wind_ms"], fm["solar_wm2"],
-                                       fm["sky_lw_wm2"], stream(self.seed, "weather"))
+                                       fm["sky_lw_wm2"], stream(self.seed, "weather"),
+                                       fm["rain_mm_h"])
 
     def soil_log(self) -> SoilLog:
         """The thermocouples every 10 minutes."""
         t_soil = np.arange(self.start_s, self.end_s + 1.0, 600.0)
         depths = np.asarray(instruments.SOIL_DEPTHS_M)
-        soil_k = soil_profile_k(self.forcing, t_soil, depths)
+        soil_k = soil_profile_k(self.forcing, t_soil, depths, self.ground)
         return instruments.soil_log(t_soil, depths, soil_k, stream(self.seed, "soil"))
 
     def blackbody_log(self) -> BlackbodyLog:
@@ -343,8 +349,8 @@ def build_twin(config: SimConfig, seed: int = 0, drift: bool = False,
     end_s = start_s + config.duration_s
     mission = plan_for(config, origin, lift_xy, config.duration_s / config.n_scans)
     motion = lift_motion(config, antenna0, start_s, drift, stream(seed, "lift"))
-    forcing = clear_sky_forcing(config.latitude_deg, config.longitude_deg, start_s,
-                                config.duration_s, 60.0)
+    forcing = site_forcing(config, start_s, stream(seed, "gusts"))
+    ground = ground_of(config.soil_type, config.soil_moisture, config.vegetation_cover)
     ends = [start_s, end_s]
     nominal = [pose_from_ptu(motion.antenna_m(t)[0], p["pan_deg"], p["tilt_deg"], platform,
                              motion.attitude_rpy_deg(t)[0])
@@ -354,7 +360,8 @@ def build_twin(config: SimConfig, seed: int = 0, drift: bool = False,
     rows_a, cols_a, area_grid = area_window(grid, config, origin)
     tables = [BandTable(b.lambda_min_um, b.lambda_max_um) for b in config.bands]
     frame_rays = [FrameRays(camera, b.shift_px) for b in config.bands]
-    emis = [emissivity_map(fields, b.lambda_min_um, b.lambda_max_um) for b in config.bands]
+    emis = [emissivity_map(fields, b.lambda_min_um, b.lambda_max_um, ground.vegetation_cover)
+            for b in config.bands]
     det_rng = stream(seed, "detector")
     detectors = [make_detector(tb, (h_px, w_px), config.bit_depth, config.netd_k, start_s,
                                det_rng) for tb in tables]
@@ -365,4 +372,4 @@ def build_twin(config: SimConfig, seed: int = 0, drift: bool = False,
     return Twin(config, int(seed), bool(drift), objs, origin, camera, cam_entry, ifov, platform,
                 start_s, end_s, mission, motion, forcing, grid, fields, rows_a, cols_a,
                 area_grid, tables, frame_rays, emis, detectors, t_min, fm, bb1_k, bb2_k,
-                pressure)
+                pressure, ground)

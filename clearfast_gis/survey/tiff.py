@@ -158,8 +158,14 @@ def read_tiff_stack(path: str | os.PathLike, pages: np.ndarray | None = None,
     try:
         try:
             data = tifffile.memmap(path, mode="r")
+            n_pages = data.shape[0] if data.ndim == 3 else 1
         except ValueError:  # compressed or not contiguous
-            data = tifffile.imread(path)
+            with tifffile.TiffFile(path) as tif:
+                n_pages = len(tif.pages)
+                data = tif.asarray()
+        if (data.shape[0] if data.ndim == 3 else 1) != n_pages:
+            raise InvalidInput(f"{n_pages} pages that are not one stack (pages of different "
+                               "sizes or types?)", label)
         if data.ndim == 2:
             data = data[None]
         if pages is None:

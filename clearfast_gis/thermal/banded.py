@@ -22,6 +22,14 @@ from __future__ import annotations
 import numba
 import numpy as np
 
+from clearfast_gis.thermal.moisture import (
+    LATENT_HEAT_JKG,
+    MAGNUS_A_HPA,
+    MAGNUS_B,
+    MAGNUS_C_C,
+)
+from clearfast_gis.units import ZERO_CELSIUS_K
+
 
 @numba.njit(cache=True, nogil=True)
 def cholesky(band):  # pragma: no cover - compiled
@@ -163,8 +171,30 @@ def solve(packed: np.ndarray, b: np.ndarray) -> np.ndarray:
 
 
 @numba.njit(cache=True, nogil=True)
+def _latent_step(tp, i, step, lat_coef, e_air, rain, water, theta):  # pragma: no cover
+    """Latent heat flux (W m-2) of column ``i`` at surface temperature ``tp`` (K), and the
+    force-restore update of its surface water ``theta[i]`` over the step (in place).
+
+    The arithmetic of :mod:`clearfast_gis.thermal.moisture` (Magnus, Lee & Pielke wetness,
+    bulk transfer with the Lewis analogy, Deardorff force-restore); dew (the surface below
+    the dew point) condenses at the full rate.
+    """
+    tc = tp - ZERO_CELSIUS_K
+    deficit = MAGNUS_A_HPA * np.exp(MAGNUS_B * tc / (tc + MAGNUS_C_C)) - e_air[step]
+    beta = 1.0
+    if deficit > 0.0:
+        x = min(max(theta[i] / water[0], 0.0), 1.0)
+        beta = 0.25 * (1.0 - np.cos(np.pi * x)) ** 2
+    le = beta * lat_coef[step] * deficit
+    dtheta = -water[3] * (le / LATENT_HEAT_JKG - rain[step]) - water[4] * (theta[i] - water[2])
+    theta[i] = min(max(theta[i] + water[5] * dtheta, 0.0), water[1])
+    return le
+
+
+@numba.njit(cache=True, nogil=True)
 def march(packed, c_dt, q_gain, k0, ts_gain, g_bottom, h, eps_sigma, flux, hc, tb, t_now,
-           t_prev, ts_now, ts_prev, keep, surface, kept, profiles):  # pragma: no cover
+           t_prev, ts_now, ts_prev, keep, surface, kept, profiles, lat_coef, e_air, rain,
+           water, theta, theta_out):  # pragma: no cover
     """BDF2 time loop of :func:`clearfast_gis.thermal.solver.run` on a band factor.
 
     The same arithmetic, step by step, as the reference loop (sparse LU): extrapolated
@@ -199,6 +229,16 @@ def march(packed, c_dt, q_gain, k0, ts_gain, g_bottom, h, eps_sigma, flux, hc, t
         Receives the states of the kept steps in step order, K.
     profiles : ndarray, shape (N + 1, n) or (0, n)
         Receives every step's state, K (when it has N + 1 rows).
+    lat_coef, e_air, rain : ndarray, shape (N + 1,) or (0,)
+        Latent heat: ``h_c / gamma`` (W m-2 hPa-1), the air's vapour pressure (hPa) and the
+        rain rate (kg m-2 s-1) per step; empty arrays switch evaporation off.
+    water : ndarray, shape (6,) or (0,)
+        ``[theta_fc, theta_sat, theta_deep, C1 / (rho_w d1), C2 / tau, dt_s]``
+        (:meth:`clearfast_gis.thermal.moisture.SurfaceWater.kernel_parameters` and the step).
+    theta : ndarray, shape (Nr,)
+        Surface volumetric water at step 0, updated in place, m3 m-3.
+    theta_out : ndarray, shape (N + 1, Nr) or (0, Nr)
+        Receives the surface water at every step (when evaporation is on).
     """
     n = c_dt.size
     nr = q_gain.size
@@ -215,6 +255,9 @@ def march(packed, c_dt, q_gain, k0, ts_gain, g_bottom, h, eps_sigma, flux, hc, t
     q = np.empty(nr)
     rhs = np.empty(n)
     surface[0] = ts_c
+    wet = lat_coef.size > 0
+    if wet:
+        theta_out[0] = theta
     n_kept = 0
     if keep[0]:
         kept[0] = t_now
@@ -227,6 +270,9 @@ def march(packed, c_dt, q_gain, k0, ts_gain, g_bottom, h, eps_sigma, flux, hc, t
             tp3 = tp * tp * tp
             hp = 4.0 * eps_sigma * tp3 + hc[step]
             q[i] = flux[step] + 3.0 * eps_sigma * tp3 * tp - (hp - h) * tp
+            if wet:
+                q[i] -= _latent_step(tp, i, step, lat_coef, e_air, rain, water, theta)
+                theta_out[step, i] = theta[i]
         for j in range(n):
             rhs[j] = c_dt[j] * (2.0 * cur[p + j] - 0.5 * old[p + j])
         for i in range(nr):

@@ -14,8 +14,12 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from clearfast_gis.errors import InvalidInput
+from clearfast_gis.thermal.moisture import saturation_vapour_pressure_hpa
 from clearfast_gis.thermal.solar import DAY_S, clear_sky_ghi, solar_position, sun_times
 from clearfast_gis.units import STEFAN_BOLTZMANN, ZERO_CELSIUS_K
+
+#: The channels of a :class:`Forcing`, in order.
+CHANNELS = ("time_s", "solar_wm2", "sky_lw_wm2", "air_temp_k", "wind_ms", "rh_pct", "rain_mm_h")
 
 
 @dataclass(frozen=True)
@@ -36,6 +40,8 @@ class Forcing:
         Wind speed, m s-1.
     rh_pct : ndarray, shape (T,)
         Relative humidity, percent.
+    rain_mm_h : ndarray, shape (T,), optional
+        Rain rate, mm h-1 (= kg m-2 h-1); default none.
     """
 
     time_s: np.ndarray
@@ -44,9 +50,12 @@ class Forcing:
     air_temp_k: np.ndarray
     wind_ms: np.ndarray
     rh_pct: np.ndarray
+    rain_mm_h: np.ndarray | None = None
 
     def __post_init__(self) -> None:
-        names = ("time_s", "solar_wm2", "sky_lw_wm2", "air_temp_k", "wind_ms", "rh_pct")
+        if self.rain_mm_h is None:
+            object.__setattr__(self, "rain_mm_h", np.zeros(np.shape(self.time_s)))
+        names = CHANNELS
         arrays = {n: np.asarray(getattr(self, n), dtype=float) for n in names}
         n = arrays["time_s"].shape
         for name, arr in arrays.items():
@@ -57,15 +66,17 @@ class Forcing:
             object.__setattr__(self, name, arr)
         if n[0] < 2 or np.any(np.diff(arrays["time_s"]) <= 0):
             raise InvalidInput("at least 2 strictly increasing times needed", field="time_s")
+        if np.any(arrays["rain_mm_h"] < 0):
+            raise InvalidInput("rain rate must not be negative", field="rain_mm_h")
 
     def at(self, time_s: ArrayLike) -> dict[str, np.ndarray]:
         """Every channel linearly interpolated to ``time_s`` (any order; held past the ends).
 
         Returns a dict with keys ``solar_wm2``, ``sky_lw_wm2``, ``air_temp_k``, ``wind_ms``,
-        ``rh_pct``, arrays shaped like ``time_s``.
+        ``rh_pct``, ``rain_mm_h``, arrays shaped like ``time_s``.
         """
         t = np.asarray(time_s, dtype=float)
-        names = ("solar_wm2", "sky_lw_wm2", "air_temp_k", "wind_ms", "rh_pct")
+        names = CHANNELS[1:]
         return {n: np.interp(t, self.time_s, getattr(self, n)) for n in names}
 
     def daily_mean_air_k(self) -> float:
@@ -74,12 +85,6 @@ class Forcing:
         end = min(t[-1], t[0] + DAY_S)
         grid = np.linspace(t[0], end, 289)
         return float(np.mean(np.interp(grid, t, self.air_temp_k)))
-
-
-def saturation_vapour_pressure_hpa(t_k: ArrayLike) -> np.ndarray:
-    """Saturation vapour pressure over water (Magnus formula, Alduchov & Eskridge 1996), hPa."""
-    t_c = np.asarray(t_k, dtype=float) - ZERO_CELSIUS_K
-    return 6.1094 * np.exp(17.625 * t_c / (t_c + 243.04))
 
 
 def clear_sky_emissivity(air_temp_k: ArrayLike, rh_pct: ArrayLike) -> np.ndarray:
@@ -239,7 +244,8 @@ def forcing_from_weather(weather_log: Any) -> Forcing:
     Forcing
         Gaps linearly interpolated; negative solar readings (night offsets) set to 0; the sky
         long-wave estimated from air temperature and humidity (Brutsaert clear sky) where the
-        log has none.
+        log has none; the rain rate from ``rain_mm`` (totals per record; missing records and
+        a log without a gauge count as no rain).
 
     Raises
     ------
@@ -273,5 +279,20 @@ def forcing_from_weather(weather_log: Any) -> Forcing:
     sky = out.get("sky_lw_wm2")
     if sky is None:
         sky = clear_sky_longwave(air_k, rh)
+    rain = _field(weather_log, "rain_mm")
+    rate = None
+    if rain is not None and rain.shape == order.shape and np.isfinite(rain).any():
+        rate = rain_rate_mm_h(t, np.nan_to_num(rain[order][keep], nan=0.0))
     return Forcing(t, np.maximum(out["solar_wm2"], 0.0), sky, air_k,
-                   np.maximum(out["wind_ms"], 0.0), rh)
+                   np.maximum(out["wind_ms"], 0.0), rh, rate)
+
+
+def rain_rate_mm_h(time_s: np.ndarray, rain_mm: np.ndarray) -> np.ndarray:
+    """Rain rate (mm h-1) from totals per record (mm in the interval ending at each record).
+
+    ``time_s`` (T,) increasing UTC seconds; the first record's interval is taken equal to the
+    second's. Negative totals (a gauge's noise) count as none.
+    """
+    dt = np.diff(time_s)
+    interval = np.concatenate([dt[:1], dt])
+    return np.maximum(np.asarray(rain_mm, dtype=float), 0.0) / (interval / 3600.0)

@@ -2,7 +2,9 @@
 
 Physics (design guide section 7): ``rho c dT/dt = (1/r) d/dr(r k dT/dr) + d/dz(k dT/dz)``;
 surface energy balance ``-k dT/dz = (1 - A) E_sun + eps E_sky - eps sigma T^4 +
-h_c (T_air - T)`` with ``h_c = (5.7 + 3.8 v) * hc_scale`` and no latent heat; bottom
+h_c (T_air - T) - LE`` with ``h_c = (5.7 + 3.8 v) * hc_scale``; the latent heat flux ``LE``
+(evaporation, dew, rain; :mod:`clearfast_gis.thermal.moisture`) only for a soil with surface
+water (``Soil.water``), else none; bottom
 (0.5 m) held at the deepest thermocouple or the daily mean air temperature; adiabatic
 side; spin-up with the first day's forcing repeated. Numerics in
 :mod:`clearfast_gis.thermal.solver`.
@@ -10,7 +12,7 @@ side; spin-up with the first day's forcing repeated. Numerics in
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 from numpy.typing import ArrayLike
@@ -20,8 +22,15 @@ from clearfast_gis.errors import InvalidInput
 from clearfast_gis.thermal import grid as grids
 from clearfast_gis.thermal.forcing import Forcing
 from clearfast_gis.thermal.materials import Material, Soil
+from clearfast_gis.thermal.moisture import (
+    WATER_HEAT_JKGK,
+    SurfaceWater,
+    psychrometric_hpa_k,
+    saturation_slope_hpa_k,
+    vapour_pressure_hpa,
+)
 from clearfast_gis.thermal.solar import DAY_S
-from clearfast_gis.thermal.solver import CellProps, SurfaceDrive, run
+from clearfast_gis.thermal.solver import CellProps, Latent, SurfaceDrive, run
 from clearfast_gis.units import STEFAN_BOLTZMANN
 
 Bottom = float | tuple[np.ndarray, np.ndarray] | None
@@ -85,6 +94,38 @@ def convective_coefficient(wind_ms: ArrayLike, hc_scale: float = 1.0) -> np.ndar
     return hc_scale * (5.7 + 3.8 * np.asarray(wind_ms, dtype=float))
 
 
+def latent_drive(water: SurfaceWater, f: dict[str, np.ndarray], hc_wm2k: np.ndarray
+                 ) -> tuple[Latent, np.ndarray, float]:
+    """Evaporation, dew and rain at the surface per step.
+
+    Parameters
+    ----------
+    water : SurfaceWater
+    f : dict of ndarray, shape (N + 1,)
+        Forcing channels per step (:meth:`Forcing.at`).
+    hc_wm2k : ndarray, shape (N + 1,)
+        Convective coefficient, W m-2 K-1.
+
+    Returns
+    -------
+    latent : Latent
+        Vapour transfer coefficient ``h_c / gamma``, air vapour pressure, rain (kg m-2 s-1).
+    h_rain_wm2k : ndarray, shape (N + 1,)
+        Rain's sensible heat ``P c_w`` (rain at air temperature), W m-2 K-1, to add to
+        ``h_c`` (the flux then carries ``h_rain T_air``).
+    h_latent_wm2k : float
+        Mean slope of the potential latent flux at the air temperature, W m-2 K-1 (added to
+        the solver's constant linearisation coefficient, for stability).
+    """
+    coef = hc_wm2k / psychrometric_hpa_k()
+    e_air = vapour_pressure_hpa(f["air_temp_k"], f["rh_pct"])
+    rain = f["rain_mm_h"] / 3600.0
+    h_lat = float(np.mean(coef * saturation_slope_hpa_k(f["air_temp_k"])))
+    latent = Latent(coef, e_air, rain, water,
+                    water.theta_deep if water.theta_start is None else water.theta_start)
+    return latent, rain * WATER_HEAT_JKGK, h_lat
+
+
 def _fold_into_forcing(t: np.ndarray, forcing: Forcing) -> np.ndarray:
     """Map spin-up times before the record onto the record's first day."""
     t0 = forcing.time_s[0]
@@ -141,11 +182,16 @@ class _Setup:
         f = forcing.at(np.clip(_fold_into_forcing(self.t, forcing), None, forcing.time_s[-1]))
         hc = convective_coefficient(f["wind_ms"], soil.hc_scale)
         eps = soil.emissivity
-        flux = (1 - soil.albedo) * f["solar_wm2"] + eps * f["sky_lw_wm2"] + hc * f["air_temp_k"]
         t_mean = float(np.mean(f["air_temp_k"]))
         h_ref = 4 * eps * STEFAN_BOLTZMANN * t_mean**3 + float(np.mean(hc))
+        latent = None
+        if soil.water is not None:
+            latent, h_rain, h_lat = latent_drive(soil.water, f, hc)
+            hc = hc + h_rain
+            h_ref += h_lat
+        flux = (1 - soil.albedo) * f["solar_wm2"] + eps * f["sky_lw_wm2"] + hc * f["air_temp_k"]
         self.bottom_k = _bottom_series(bottom, forcing, self.t)
-        self.drive = SurfaceDrive(flux, hc, self.bottom_k, eps, h_ref)
+        self.drive = SurfaceDrive(flux, hc, self.bottom_k, eps, h_ref, latent)
         self.first_out = self.spin_steps - 2
 
     def column(self, keep_states=(), keep_profiles=False):
@@ -287,9 +333,10 @@ class ObjectModel:
         tile = np.ones((1, nr))
         ts = col.surface_k[self.start, 0] * np.ones(nr)
         ts_prev = col.surface_k[self.start - 1, 0] * np.ones(nr)
-        drive = SurfaceDrive(s.drive.flux_wm2[self.start:], s.drive.hc_wm2k[self.start:],
-                             s.drive.bottom_k[self.start:], s.drive.emissivity,
-                             s.drive.h_ref_wm2k)
+        drive = s.drive.from_step(self.start)
+        if drive.latent is not None:
+            drive = replace(drive, latent=replace(drive.latent,
+                                                  theta_start=col.theta[self.start, 0]))
         res = run(s.z_faces, self.r_faces, props, drive, s.dt,
                   col.states[self.start] * tile, col.states[self.start - 1] * tile,
                   surface_init_k=(ts, ts_prev))

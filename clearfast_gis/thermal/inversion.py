@@ -3,8 +3,8 @@
 theta = (d, log10 alpha): the best node of the site table (coarse grid), then bounded
 least squares (trust-region reflective) on the tensor-spline interpolant of the table,
 fitting the centre-minus-background contrast over all scans. Covariance from the
-Jacobian, scaled by the residual variance (floored at the noise variance when the noise is
-known).
+Jacobian, scaled by the residual variance (inflated for lag-1 autocorrelation of the
+residuals, floored at the noise variance when the noise is known).
 """
 
 from __future__ import annotations
@@ -18,7 +18,13 @@ from scipy.optimize import least_squares
 from clearfast_gis.errors import InvalidInput
 from clearfast_gis.thermal.forcing import Forcing
 from clearfast_gis.thermal.materials import Soil
-from clearfast_gis.thermal.table import SiteTable, build_site_table, contrast_spline
+from clearfast_gis.thermal.soilfit import ar1_inflation
+from clearfast_gis.thermal.table import (
+    DEFAULT_HEIGHT_M,
+    SiteTable,
+    build_site_table,
+    contrast_spline,
+)
 
 STATUSES = ("ok", "at_bound", "weak_contrast", "not_characterised")
 """Possible :attr:`Inversion.status` values."""
@@ -107,7 +113,7 @@ def invert_anomaly(
     radius_m: float,
     noise_k: float | None = None,
     table: SiteTable | None = None,
-    height_m: float = 0.05,
+    height_m: float = DEFAULT_HEIGHT_M,
 ) -> Inversion:
     """Estimate burial depth and diffusivity of one anomaly.
 
@@ -176,7 +182,9 @@ def invert_anomaly(
     r = best.fun
     n, p = r.size, 2
     rms = float(np.sqrt(np.mean(r**2)))
-    s2 = float(np.sum(r**2)) / max(n - p, 1)
+    # scan-to-scan residuals of a smooth model misfit are correlated: inflate the variance
+    # for lag-1 autocorrelation (as the soil fit does), else 48 scans claim 0.1 cm
+    s2 = float(np.sum(r**2)) / max(n - p, 1) * ar1_inflation(r[:, None])
     noise = rms if noise_k is None else float(noise_k)
     if noise_k is not None:
         s2 = max(s2, noise**2)

@@ -9,6 +9,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass, replace
 
+from clearfast_gis.thermal.moisture import SurfaceWater
+
 
 @dataclass(frozen=True)
 class Material:
@@ -66,9 +68,14 @@ class Soil(Material):
         Multiplier on the convective coefficient ``h_c = 5.7 + 3.8 v`` W m-2 K-1 (1 = nominal);
         fitted with the albedo to background pixels by
         :func:`clearfast_gis.thermal.surface_fit.fit_surface_parameters`.
+    water : SurfaceWater or None
+        Water of the surface layer: with it the surface evaporates, takes dew and rain
+        (latent heat, :mod:`clearfast_gis.thermal.moisture`); None: a dry surface without
+        latent heat (the inversion's model).
     """
 
     hc_scale: float = 1.0
+    water: SurfaceWater | None = None
 
 
 _SAND = (

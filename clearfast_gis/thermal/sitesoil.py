@@ -1,5 +1,17 @@
-"""The site's soil (diffusivity from the thermocouples, surface terms from the background
-pixels) and the characterisation of each anomaly with the thermal model on it."""
+"""The site's soil for the inversion (diffusivity from the thermocouples, heat capacity from
+the sand end-members, surface terms from the shallowest thermocouple) and the
+characterisation of each anomaly with the thermal model on it.
+
+Why the shallowest thermocouple and not the mosaics' background: the mosaics hold *apparent*
+temperature. A sandy soil's band emissivity is 0.84-0.96 (quartz reststrahlen at 8-9.5 um)
+and it reflects the cold sky, so its apparent temperature is several kelvin below its kinetic
+temperature, with another diurnal amplitude. Fitted to it, the surface terms of the 1-D model
+(albedo, convective scale) settle far from the soil's (on the demo survey: albedo 0.55 and
+``hc_scale`` 0.2, the bound, against 0.29 and 0.75 from the thermocouple); together with a
+moist-sand heat capacity for a half-moist soil they put the buried mines about 1 cm too
+shallow (BENCHMARKS.md, "Depth bias"). A thermocouple reads the kinetic temperature the model
+computes.
+"""
 
 from __future__ import annotations
 
@@ -9,26 +21,52 @@ import numpy as np
 
 from clearfast_gis.detection.features import AnomalyFeatures
 from clearfast_gis.progress import NULL_PROGRESS, Progress
-from clearfast_gis.thermal import (
-    Inversion,
-    build_site_table,
-    fit_soil_diffusivity,
-    fit_surface_parameters,
-    get_soil,
-    invert_anomaly,
-)
+from clearfast_gis.thermal.error_budget import with_chain_errors
 from clearfast_gis.thermal.forcing import Forcing
+from clearfast_gis.thermal.inversion import Inversion, invert_anomaly
+from clearfast_gis.thermal.materials import MATERIALS, Soil, get_soil
+from clearfast_gis.thermal.soilfit import fit_soil_diffusivity, soil_log_field
+from clearfast_gis.thermal.surface_fit import fit_surface_parameters
+from clearfast_gis.thermal.table import build_site_table
 from clearfast_gis.units import ZERO_CELSIUS_K
 
+SURFACE_SENSOR_MAX_DEPTH_M = 0.05
+"""Deepest thermocouple that still constrains the surface terms, m."""
 
-def first_band(series: np.ndarray) -> np.ndarray:
-    """Band 0 of a per-scan series (N,) or (N, B)."""
-    s = np.asarray(series, dtype=np.float64)
-    return s[:, 0] if s.ndim == 2 else s
+MAX_SURFACE_SAMPLES = 64
+"""Thermocouple samples used for the surface fit (evenly spread over the scans' period)."""
 
 
-def site_soil(soil_log, forcing: Forcing, times_s: np.ndarray, background_c: np.ndarray):
-    """The site's soil: diffusivity from the thermocouples, surface terms from the background.
+def soil_from_diffusivity(alpha_m2s: float) -> Soil:
+    """A sand of diffusivity ``alpha_m2s`` (m2 s-1): heat capacity interpolated between the dry
+    and moist sand end-members in proportion to the diffusivity (moisture raises both), and
+    conductivity ``alpha * rho c``; optical terms of the nearer end-member.
+
+    The thermocouples give the diffusivity only; the inversion needs the conductivity (the
+    object's contrast depends on the conductivity ratio). A moist-sand ``rho c`` for a half-
+    moist soil overstates its conductivity by 17 % and the object diffusivity by 60 %.
+    """
+    dry, moist = MATERIALS["dry_sand"], MATERIALS["moist_sand"]
+    w = float(np.clip((alpha_m2s - dry.alpha_m2s) / (moist.alpha_m2s - dry.alpha_m2s), 0, 1))
+    rho_c = dry.rho_c_jm3k + w * (moist.rho_c_jm3k - dry.rho_c_jm3k)
+    base = get_soil("moist_sand" if w >= 0.5 else "dry_sand")
+    return dataclasses.replace(base, k_wmk=alpha_m2s * rho_c, rho_c_jm3k=rho_c)
+
+
+def site_soil(soil_log, forcing: Forcing, times_s: np.ndarray, background_c: np.ndarray
+              ) -> tuple[Soil, float, float]:
+    """The site's soil: diffusivity from the thermocouples, surface terms from the shallowest
+    thermocouple (<= 5 cm), else from the background's apparent temperature.
+
+    Parameters
+    ----------
+    soil_log : SoilLog or mapping
+        ``time_s`` (T,), ``depth_m`` (D,), ``temp_c`` (T, D) degrees C.
+    forcing : Forcing
+    times_s : float (N,)
+        Scan times, UTC epoch seconds.
+    background_c : float (N,)
+        Median apparent temperature of the background per scan, degrees C (the fallback).
 
     Returns
     -------
@@ -37,13 +75,31 @@ def site_soil(soil_log, forcing: Forcing, times_s: np.ndarray, background_c: np.
         Fitted soil diffusivity and its 1-sigma uncertainty.
     """
     alpha, sigma = fit_soil_diffusivity(soil_log)
-    base = get_soil("moist_sand" if alpha > 4e-7 else "dry_sand")
-    soil = dataclasses.replace(base, k_wmk=alpha * base.rho_c_jm3k)
+    soil = soil_from_diffusivity(alpha)
+    depths = soil_log_field(soil_log, "depth_m")
+    shallow = int(np.argmin(depths))
+    if depths[shallow] <= SURFACE_SENSOR_MAX_DEPTH_M:
+        t = soil_log_field(soil_log, "time_s")
+        temp = soil_log_field(soil_log, "temp_c")[:, shallow]
+        sel = np.flatnonzero((t >= np.min(times_s)) & (t <= np.max(times_s)) & np.isfinite(temp))
+        if sel.size >= 4:
+            sel = sel[np.unique(np.linspace(0, sel.size - 1, MAX_SURFACE_SAMPLES).round()
+                                .astype(int))]
+            soil, _ = fit_surface_parameters(soil, forcing, t[sel],
+                                             temp[sel] + ZERO_CELSIUS_K,
+                                             depth_m=float(depths[shallow]))
+            return soil, alpha, sigma
     ok = np.isfinite(background_c)
     if ok.sum() >= 4:
         soil, _ = fit_surface_parameters(soil, forcing, times_s[ok],
                                          background_c[ok] + ZERO_CELSIUS_K)
     return soil, alpha, sigma
+
+
+def first_band(series: np.ndarray) -> np.ndarray:
+    """Band 0 of a per-scan series (N,) or (N, B)."""
+    s = np.asarray(series, dtype=np.float64)
+    return s[:, 0] if s.ndim == 2 else s
 
 
 def radius_nodes(radii_m: np.ndarray, max_nodes: int = 3) -> np.ndarray:
@@ -72,8 +128,10 @@ def characterise(features: list[AnomalyFeatures], times_s: np.ndarray, forcing: 
     Returns
     -------
     dict[int, Inversion]
-        Anomalies seen in fewer than 4 scans (with their background ring) are left out: their
-        status is ``not_characterised``.
+        With the chain's error terms in the sigmas
+        (:func:`clearfast_gis.thermal.error_budget.with_chain_errors`). Anomalies seen in
+        fewer than 4 scans (with their background ring) are left out: their status is
+        ``not_characterised``.
     """
     if not features:
         return {}
@@ -89,7 +147,8 @@ def characterise(features: list[AnomalyFeatures], times_s: np.ndarray, forcing: 
         ring = first_band(f.ring_k) + ZERO_CELSIUS_K
         r_tab = float(np.clip(r, nodes.min(), nodes.max()))
         if (np.isfinite(centre) & np.isfinite(ring)).sum() >= 4:
-            out[f.id] = invert_anomaly(times_s, centre, ring, forcing, soil, r_tab, table=table)
+            out[f.id] = with_chain_errors(invert_anomaly(times_s, centre, ring, forcing, soil,
+                                                         r_tab, table=table))
         progress.advance()
     progress.close()
     return out

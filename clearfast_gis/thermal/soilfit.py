@@ -19,7 +19,8 @@ from scipy.sparse.linalg import splu
 from clearfast_gis.errors import InvalidInput
 
 
-def _get(log: Any, name: str) -> np.ndarray:
+def soil_log_field(log: Any, name: str) -> np.ndarray:
+    """Field ``name`` of a soil log (object or mapping) as a float array."""
     value = log.get(name) if isinstance(log, Mapping) else getattr(log, name, None)
     if value is None:
         raise InvalidInput("missing from the soil log", field=name)
@@ -96,7 +97,7 @@ def conduction_between(
     return out
 
 
-def _ar1_inflation(resid: np.ndarray) -> float:
+def ar1_inflation(resid: np.ndarray) -> float:
     """Variance inflation ``(1 + rho) / (1 - rho)`` for lag-1 correlated residuals (T, D)."""
     r = resid - resid.mean(axis=0)
     num = float(np.sum(r[1:] * r[:-1]))
@@ -132,9 +133,9 @@ def fit_soil_diffusivity(
     InvalidInput
         Fewer than 3 depths, fewer than 12 complete records or a degenerate log.
     """
-    t = _get(soil_log, "time_s")
-    z = _get(soil_log, "depth_m")
-    temp = _get(soil_log, "temp_c")
+    t = soil_log_field(soil_log, "time_s")
+    z = soil_log_field(soil_log, "depth_m")
+    temp = soil_log_field(soil_log, "temp_c")
     if z.ndim != 1 or z.size < 3:
         raise InvalidInput("at least 3 sensor depths needed", field="depth_m")
     if temp.shape != (t.size, z.size):
@@ -161,7 +162,7 @@ def fit_soil_diffusivity(
     sol = least_squares(resid, [start], bounds=([lo], [hi]), diff_step=1e-3, x_scale=[0.1])
     r = sol.fun.reshape(observed.shape)
     dof = max(r.size - 1, 1)
-    s2 = float(np.sum(r**2)) / dof * _ar1_inflation(r)
+    s2 = float(np.sum(r**2)) / dof * ar1_inflation(r)
     jtj = float(sol.jac[:, 0] @ sol.jac[:, 0])
     sigma_log = np.sqrt(s2 / jtj) if jtj > 0 else np.inf
     alpha = 10.0 ** sol.x[0]

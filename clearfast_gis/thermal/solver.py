@@ -26,6 +26,7 @@ from scipy.sparse.linalg import splu
 
 from clearfast_gis import kernels
 from clearfast_gis.thermal import banded
+from clearfast_gis.thermal.moisture import SurfaceWater
 from clearfast_gis.units import STEFAN_BOLTZMANN
 
 
@@ -59,6 +60,8 @@ class SurfaceDrive:
         Surface emissivity (0 makes the surface condition linear: ``q = flux - h_c T_s``).
     h_ref_wm2k : float
         Constant linearisation coefficient in the matrix, W m-2 K-1.
+    latent : Latent or None
+        Evaporation and dew at the surface (None: a dry surface, no latent heat).
     """
 
     flux_wm2: np.ndarray
@@ -66,6 +69,41 @@ class SurfaceDrive:
     bottom_k: np.ndarray
     emissivity: float
     h_ref_wm2k: float
+    latent: Latent | None = None
+
+    def from_step(self, start: int) -> SurfaceDrive:
+        """The same drive from step ``start`` on (index ``start`` becomes 0)."""
+        lat = self.latent
+        if lat is not None:
+            lat = Latent(lat.coef_wm2hpa[start:], lat.e_air_hpa[start:], lat.rain_kgm2s[start:],
+                         lat.water, lat.theta_start)
+        return SurfaceDrive(self.flux_wm2[start:], self.hc_wm2k[start:], self.bottom_k[start:],
+                            self.emissivity, self.h_ref_wm2k, lat)
+
+
+@dataclass(frozen=True)
+class Latent:
+    """Latent heat at the surface per step, arrays of shape (N + 1,) (index 0 unused).
+
+    Attributes
+    ----------
+    coef_wm2hpa : ndarray
+        ``h_c / gamma``: the bulk transfer coefficient of vapour, W m-2 hPa-1.
+    e_air_hpa : ndarray
+        Vapour pressure of the air, hPa.
+    rain_kgm2s : ndarray
+        Rain rate, kg m-2 s-1.
+    water : SurfaceWater
+        The surface layer's water parameters (:mod:`clearfast_gis.thermal.moisture`).
+    theta_start : float or ndarray, shape (Nr,)
+        Surface water at step 0, m3 m-3.
+    """
+
+    coef_wm2hpa: np.ndarray
+    e_air_hpa: np.ndarray
+    rain_kgm2s: np.ndarray
+    water: SurfaceWater
+    theta_start: float | np.ndarray
 
 
 @dataclass(frozen=True)
@@ -74,12 +112,14 @@ class SolverResult:
 
     ``surface_k`` (N + 1, Nr): surface temperature of every column at every step;
     ``states`` maps a requested step index to the cell temperatures (Nz, Nr) at that step;
-    ``profiles`` (N + 1, Nz, Nr) when all states were kept, else None.
+    ``profiles`` (N + 1, Nz, Nr) when all states were kept, else None; ``theta`` (N + 1, Nr)
+    the surface layer's volumetric water at every step with latent heat, else None.
     """
 
     surface_k: np.ndarray
     states: dict[int, np.ndarray]
     profiles: np.ndarray | None
+    theta: np.ndarray | None = None
 
 
 @dataclass(frozen=True)
@@ -292,13 +332,30 @@ def _run_band(z_faces, r_faces, props, drive, dt_s, init_k, init_prev_k, surface
     def f64(a):
         return np.ascontiguousarray(a, dtype=np.float64)
 
+    lat, water, theta, theta_out = _latent_arrays(drive, dt_s, nr)
     banded.march(packed, c_dt, f64(q_gain), f64(net.k0), f64(ts_gain), f64(net.g_bottom), h,
                  float(drive.emissivity * STEFAN_BOLTZMANN), f64(drive.flux_wm2),
                  f64(drive.hc_wm2k), f64(drive.bottom_k), t_now, f64(t_prev), f64(ts_now),
-                 f64(ts_prev), mask, surface, kept, profiles)
+                 f64(ts_prev), mask, surface, kept, profiles, *lat, water, theta, theta_out)
     states = {n: kept[i].reshape(nz, nr) for i, n in enumerate(steps)}
     return SolverResult(surface, states,
-                        profiles.reshape(n_steps + 1, nz, nr) if keep_profiles else None)
+                        profiles.reshape(n_steps + 1, nz, nr) if keep_profiles else None,
+                        theta_out if drive.latent is not None else None)
+
+
+def _latent_arrays(drive: SurfaceDrive, dt_s: float, nr: int):
+    """The kernel's latent-heat arguments: (coef, e_air, rain), water parameters, the surface
+    water at step 0 (Nr,) and the (N + 1, Nr) output; empty arrays without latent heat."""
+    lat = drive.latent
+    n = drive.flux_wm2.size
+    if lat is None:
+        empty = np.zeros(0)
+        return (empty, empty, empty), empty, np.zeros(nr), np.zeros((0, nr))
+    arrays = tuple(np.ascontiguousarray(a, dtype=np.float64)
+                   for a in (lat.coef_wm2hpa, lat.e_air_hpa, lat.rain_kgm2s))
+    water = np.append(lat.water.kernel_parameters(), float(dt_s))
+    theta = np.ascontiguousarray(np.broadcast_to(np.asarray(lat.theta_start, float), (nr,)))
+    return arrays, water, theta.copy(), np.empty((n, nr))
 
 
 def _run_splu(z_faces, r_faces, props, drive, dt_s, init_k, init_prev_k, surface_init_k,
@@ -328,11 +385,18 @@ def _run_splu(z_faces, r_faces, props, drive, dt_s, init_k, init_prev_k, surface
         profiles[0] = t_now.reshape(nz, nr)
     rhs_base = np.empty(nz * nr)
     flux, hc, tb = drive.flux_wm2, drive.hc_wm2k, drive.bottom_k
+    lat, water, theta, theta_out = _latent_arrays(drive, dt_s, nr)
+    if drive.latent is not None:
+        theta_out[0] = theta
     for n in range(1, n_steps + 1):
         tp = 2.0 * ts_now - ts_prev
         tp3 = tp * tp * tp
         hp = 4.0 * eps_sigma * tp3 + hc[n]
         q = flux[n] + 3.0 * eps_sigma * tp3 * tp - (hp - h) * tp
+        if drive.latent is not None:
+            q = q - np.array([banded._latent_step(tp[i], i, n, *lat, water, theta)
+                              for i in range(nr)])
+            theta_out[n] = theta
         np.multiply(c_dt, 2.0 * t_now - 0.5 * t_prev, out=rhs_base)
         rhs_base[top] += q_gain * q
         rhs_base[bottom] += g_bottom * tb[n]
@@ -345,4 +409,5 @@ def _run_splu(z_faces, r_faces, props, drive, dt_s, init_k, init_prev_k, surface
             states[n] = t_now.reshape(nz, nr).copy()
         if profiles is not None:
             profiles[n] = t_now.reshape(nz, nr)
-    return SolverResult(surface, states, profiles)
+    return SolverResult(surface, states, profiles,
+                        theta_out if drive.latent is not None else None)

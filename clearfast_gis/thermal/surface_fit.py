@@ -1,4 +1,4 @@
-"""Surface-flux parameters from mine-free background pixels."""
+"""Surface-flux parameters from mine-free background pixels or a shallow thermocouple."""
 
 from __future__ import annotations
 
@@ -21,8 +21,10 @@ def fit_surface_parameters(
     background_k: ArrayLike,
     bottom: Bottom = None,
     dt_s: float = 600.0,
+    depth_m: float = 0.0,
 ) -> tuple[Soil, float]:
-    """Albedo and convective scale that make the 1-D model match the background surface.
+    """Albedo and convective scale that make the 1-D model match the background surface
+    (``depth_m = 0``) or a thermocouple at ``depth_m`` below it.
 
     Parameters
     ----------
@@ -33,12 +35,15 @@ def fit_surface_parameters(
     time_s : array_like, shape (S,)
         Scan times, UTC epoch seconds.
     background_k : array_like, shape (S,)
-        Measured surface temperature of undisturbed soil (e.g. the median of mine-free
-        pixels), K.
+        Measured temperature of undisturbed soil at ``depth_m``, K: the surface (e.g. the
+        median of mine-free pixels, an apparent temperature) or a shallow thermocouple (a
+        kinetic temperature, free of the surface's emissivity and reflected sky).
     bottom : Bottom
         Bottom boundary of the model.
     dt_s : float
         Model time step, s.
+    depth_m : float
+        Depth of the measured temperature, m (0 = surface).
 
     Returns
     -------
@@ -59,6 +64,10 @@ def fit_surface_parameters(
         return replace(soil, albedo=float(p[0]), hc_scale=float(np.exp(p[1])))
 
     def resid(p: np.ndarray) -> np.ndarray:
+        if depth_m > 0:
+            run = simulate_background(model(p), forcing, t[ok], depths_m=(depth_m,),
+                                      bottom=bottom, dt_s=dt_s)
+            return run.profile_k[:, 0] - obs[ok]
         run = simulate_background(model(p), forcing, t[ok], bottom=bottom, dt_s=dt_s)
         return run.surface_k - obs[ok]
 

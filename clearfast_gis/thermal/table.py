@@ -23,6 +23,11 @@ DEFAULT_DEPTHS_M = np.array(
 DEFAULT_LOG10_ALPHA = np.array([-7.5, -7.25, -7.0, -6.75, -6.5, -6.25, -6.0, -5.5, -5.0, -4.5])
 """log10 diffusivity nodes, m2 s-1 (3e-8 .. 3e-5: plastics and explosives to steel)."""
 
+DEFAULT_HEIGHT_M = 0.08
+"""Object height the inversion assumes, m: that of the mine types of the surveys (AP M2A4
+8 cm, AT M6A2 9.4 cm). A 5 cm object fitted to an 8 cm mine's contrast puts it 0.3-0.5 cm
+too deep (BENCHMARKS.md, "Depth bias")."""
+
 OBJECT_RHO_C_JM3K = MATERIALS["tnt"].rho_c_jm3k
 """Volumetric heat capacity assumed for the object, J m-3 K-1. Solids span only 1.3-3.6e6
 while conductivity spans 0.2-240 W/m/K, so the object is parametrised by its diffusivity at
@@ -106,7 +111,7 @@ def build_site_table(
     soil: Soil,
     radius_m: float | ArrayLike,
     scan_times_s: ArrayLike,
-    height_m: float = 0.05,
+    height_m: float = DEFAULT_HEIGHT_M,
     depths_m: ArrayLike = DEFAULT_DEPTHS_M,
     log10_alpha: ArrayLike = DEFAULT_LOG10_ALPHA,
     object_rho_c_jm3k: float = OBJECT_RHO_C_JM3K,

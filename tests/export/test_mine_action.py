@@ -81,7 +81,7 @@ def test_export_fields_and_values(demo_products, tmp_path):
             assert float(r["depth_m"]) == pytest.approx(s.depth_m, abs=1e-4)
         assert r["imsma_id"].startswith("CF-DEMO-SEED0-") and r["imsma_links"] == ""
         assert r["mine_indication"] == ("yes" if s.class_cue in ("at_mine", "ap_mine") else "no")
-        assert r["cue_confidence"] == f"{s.confidence:.3f}"
+        assert r["cue_confidence"] == f"{s.cue_confidence:.3f}"
     assert by_src["A004"]["gnss_fix"] == "RTK float (degraded)"
     validate_gpkg.check(str(res.gpkg))
     frame = pyogrio.read_dataframe(res.gpkg, layer="indications")

@@ -24,7 +24,7 @@ def record(**over):
     rec = {"anomaly_id": "A001", "x": 532786.0, "y": 3891961.0, "area_m2": 0.09,
            "diameter_m": 0.34, "circularity": 0.9, "depth_m": 0.01, "depth_sigma_m": 0.005,
            "diffusivity_m2s": 1.0e-7, "status": "ok", "polarity": "hot",
-           "class_cue": "at_mine", "confidence": 0.9, "n_scans": 49}
+           "class_cue": "at_mine", "cue_confidence": 0.9, "n_scans": 49}
     rec.update(over)
     return rec
 

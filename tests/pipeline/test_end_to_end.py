@@ -199,3 +199,51 @@ def test_resources_per_stage(demo_products):
     walls = sum(r["wall_s"] for r in res["stages"].values())
     assert walls <= res["total"]["wall_s"] * 1.001
     assert res["total"]["peak_rss_mb"] == max(r["peak_rss_mb"] for r in res["stages"].values())
+
+
+def test_suspects_ranked_and_candidates_set_aside(demo_survey, demo_products):
+    """Issue #21: suspects in priority order by p_mine, what cannot be a mine set aside with
+    its reason, the expected operating curve in products.json, no shallow mine set aside."""
+    import geopandas as gpd
+
+    from clearfast_gis.evaluation.ranked import score_ranked
+
+    gpkg = demo_products / "anomalies.gpkg"
+    sus = gpd.read_file(gpkg, layer="suspects")
+    cand = gpd.read_file(gpkg, layer="candidates")
+    assert sus["priority"].tolist() == list(range(1, len(sus) + 1))
+    p = sus["p_mine"].to_numpy(float)
+    assert np.all((p >= 0) & (p <= 1)) and np.all(np.diff(p) <= 0)
+    assert sus["set_aside_reason"].isna().all()
+    assert len(cand) > 0 and cand["p_mine"].isna().all() and cand["priority"].isna().all()
+    assert all(isinstance(r, str) and r for r in cand["set_aside_reason"])
+    curve = json.loads((demo_products / "products.json").read_text())["suspects"]
+    assert curve["n_suspects"] == len(sus) and curve["n_candidates"] == len(cand)
+    oc = curve["operating_curve"]
+    assert oc["priority"] == list(range(1, len(sus) + 1))
+    assert oc["expected_mines"][-1] == pytest.approx(p.sum(), abs=0.01)
+    score = score_ranked(demo_survey, demo_products)
+    assert score.n_candidate_mines == 0
+    # the mines come first: every detected mine <= 5 cm before the list's expected false
+    # alarms reach a handful (demo: 48 m2, 6 scans)
+    assert score.pd_at(0.1) >= score.pd[-1] - 1e-9
+    html = (demo_products / "report.html").read_text()
+    assert "Operating curve" in html and "figures/operating_curve.png" in html
+    assert (demo_products / "figures" / "operating_curve.png").is_file()
+
+
+def test_p_mine_is_calibrated_on_a_survey_it_was_not_fitted_on(demo_survey, demo_products):
+    """The demo survey (seed 0) is not among the model's ``fitted_on`` surveys: the expected
+    number of mines (sum of p_mine) agrees with the true count within 3 sigma of the
+    Poisson-binomial spread, and p_mine predicts better than the base rate (Brier score)."""
+    from clearfast_gis.detection.likelihood import load_model
+    from clearfast_gis.evaluation.ranked import score_ranked
+
+    assert not any(t.startswith("demo-s0") for t in load_model()["fitted_on"])
+    s = score_ranked(demo_survey, demo_products)
+    p, y = s.p_mine, s.is_mine.astype(float)
+    assert y.sum() >= 4
+    assert abs(p.sum() - y.sum()) <= 3 * np.sqrt(np.sum(p * (1 - p))), (p.sum(), y.sum())
+    assert np.mean((p - y) ** 2) < 0.75 * np.mean((y.mean() - y) ** 2)
+    # every mine at most 5 cm deep is found before the list's third false alarm
+    assert s.pd_at(3 / s.footprint_m2) == 1.0

@@ -17,12 +17,13 @@ from clearfast_gis.thermal import (
 RADIUS_M = 0.052
 SOIL = MATERIALS["moist_sand"]
 NOISE_K = 0.05
+HEIGHT_M = 0.05
 
 
 @pytest.fixture(scope="module")
 def table(forcing, scans):
     return build_site_table(
-        forcing, SOIL, RADIUS_M, scans,
+        forcing, SOIL, RADIUS_M, scans, height_m=HEIGHT_M,
         depths_m=[0.0, 0.01, 0.02, 0.03, 0.04, 0.06, 0.08, 0.10, 0.15, 0.20],
         log10_alpha=[-7.5, -7.25, -7.0, -6.5, -6.0, -5.0, -4.5],
     )
@@ -30,7 +31,7 @@ def table(forcing, scans):
 
 def _observe(forcing, scans, depth_m, material="tnt", seed=0):
     """Truth from the twice-finer model, 0.05 K noise on the centre."""
-    obj = BuriedObject(RADIUS_M, 0.05, depth_m, MATERIALS[material])
+    obj = BuriedObject(RADIUS_M, HEIGHT_M, depth_m, MATERIALS[material])
     run = simulate_object(SOIL, obj, forcing, scans, refine=1)
     rng = np.random.default_rng(seed)
     return run.surface_k[:, 0] + rng.normal(0, NOISE_K, scans.size), run.background_k

@@ -68,7 +68,7 @@ class TwinCamera:
         self.hold = hold
         times = twin.start_s + grid_step_s * np.arange(
             int(np.ceil((twin.end_s - twin.start_s) / grid_step_s)) + 1)
-        self.truth = thermal_truth(twin.forcing, times, twin.objects)
+        self.truth = thermal_truth(twin.forcing, times, twin.objects, twin.ground)
         self.rng = stream(twin.seed, "camera")
         self.n_frames = 0
         self._grids: dict[int, list[RadianceGrid]] = {}

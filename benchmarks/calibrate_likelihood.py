@@ -1,0 +1,96 @@
+"""Fit the ``p_mine`` model (clearfast_gis/detection/likelihood.py) on processed simulated
+surveys and write its parameters to ``clearfast_gis/data/likelihood.json``.
+
+    python benchmarks/calibrate_likelihood.py --work /tmp/clearfast-bench \
+        --tags demo-s10 demo-s11 ... [--write]
+
+Each tag names ``WORK/TAG/survey`` (with ``truth/``) and ``WORK/TAG/products`` (processed).
+Every detection of the products that passes the screening
+(:mod:`clearfast_gis.detection.screening`) is a training row; its label is 1 when it lies
+within the radius plus 5 cm of a true mine of any depth. The surveys fitted on must never be
+the ones the model is scored on (``benchmarks/detection_accuracy.py`` scores other seeds).
+Logistic regression: scikit-learn, L2 penalty C = 1 on standardised features.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+from pathlib import Path
+
+import numpy as np
+
+from clearfast_gis.detection.likelihood import FEATURES, features, p_mine_from_features
+from clearfast_gis.detection.screening import screen
+from clearfast_gis.evaluation.operating import reliability_table
+from clearfast_gis.evaluation.truth import MINE_KINDS, read_truth_objects
+
+MODEL_VERSION = "logistic-1"
+
+
+def detection_records(products: Path) -> list[dict]:
+    """Every detection of a products folder as records (the ``anomalies`` layer)."""
+    import geopandas as gpd
+
+    frame = gpd.read_file(products / "anomalies.gpkg", layer="anomalies")
+    recs = frame.drop(columns="geometry").to_dict("records")
+    for r in recs:
+        for k, v in list(r.items()):
+            if isinstance(v, float) and np.isnan(v):
+                r[k] = None
+    return recs
+
+
+def is_mine(records: list[dict], survey: Path) -> np.ndarray:
+    """Per record: lies within the radius plus 5 cm of a true mine (any depth)."""
+    mines = [m for m in read_truth_objects(survey) if m["kind"] in MINE_KINDS]
+    out = np.zeros(len(records), dtype=bool)
+    for i, r in enumerate(records):
+        out[i] = any(np.hypot(r["x"] - m["x"], r["y"] - m["y"]) <= 0.5 * m["diameter_m"] + 0.05
+                     for m in mines)
+    return out
+
+
+def training_rows(survey: Path, products: Path) -> tuple[np.ndarray, np.ndarray]:
+    """Features (M, F) and labels (M,) of the screened detections of one survey."""
+    n_scans = len(json.loads((products / "products.json").read_text())["scans"])
+    suspects, _ = screen(detection_records(products), n_scans)
+    x = np.array([features(r, n_scans) for r in suspects]).reshape(-1, len(FEATURES))
+    return x, is_mine(suspects, survey)
+
+
+def main() -> None:
+    from sklearn.linear_model import LogisticRegression
+
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--work", default="/tmp/clearfast-bench")
+    ap.add_argument("--tags", nargs="+", required=True)
+    ap.add_argument("--write", action="store_true", help="write clearfast_gis/data/likelihood.json")
+    args = ap.parse_args()
+    xs, ys = [], []
+    for tag in args.tags:
+        x, y = training_rows(Path(args.work) / tag / "survey", Path(args.work) / tag / "products")
+        xs.append(x)
+        ys.append(y)
+        print(f"{tag}: {len(y)} suspects, {int(y.sum())} mines")
+    x, y = np.vstack(xs), np.concatenate(ys)
+    mean, scale = x.mean(axis=0), x.std(axis=0)
+    scale[scale == 0] = 1.0
+    fit = LogisticRegression(C=1.0, max_iter=1000).fit((x - mean) / scale, y)
+    model = {"version": MODEL_VERSION, "features": list(FEATURES),
+             "mean": [round(float(v), 6) for v in mean],
+             "scale": [round(float(v), 6) for v in scale],
+             "coef": [round(float(v), 6) for v in fit.coef_[0]],
+             "intercept": round(float(fit.intercept_[0]), 6),
+             "fitted_on": list(args.tags), "n_rows": int(len(y)), "n_mines": int(y.sum())}
+    p = p_mine_from_features(x, model)
+    model["reliability_in_sample"] = reliability_table(p, y)
+    print(json.dumps(model, indent=1))
+    if args.write:
+        out = Path(__file__).resolve().parents[1] / "clearfast_gis" / "data" / "likelihood.json"
+        out.write_text(json.dumps(model, indent=1) + "\n")
+        print(f"written {out}")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,164 @@
+"""The chain across weather, soils and sites: a matrix of conditions x seeds.
+
+Each condition is a scenario (weather, soil, grass, site, date) on a preset (``--preset demo``
+by default; ``trial`` for the full-scale matrix, ~12 min a survey on one core). Every survey
+is simulated, processed with the default options, and scored against its truth:
+
+- Pd: mines surface-laid or buried at most 5 cm that a suspect matches;
+- false alarms per m2: suspects cued as mines that match no mine;
+- centre error (RMS), depth error (MAE) of confident depths (``ok``/``at_bound``) of mines at
+  0-4 cm and at all depths;
+- honest statuses: the share of matched mines (any depth) whose status is honest
+  (:mod:`clearfast_gis.evaluation.honesty`: a flag, or a confident depth within
+  max(2 sigma, 1 cm) of the truth);
+- the day's contrast the chain stated (``products.json`` ``day_contrast``: modelled contrast
+  of a 10 cm AP mine at 5 cm, the noise, the deepest depth that shows) and whether the
+  report warned of low contrast.
+
+The real-weather condition forces the twin with a real station record (a CR1000 ClimaVUE50
+table, Svalbard, July 2024, from ``../shared/data/real-field-files/toa5``, read by Campbell's
+standard names; not copied into the repository).
+
+    python benchmarks/conditions.py [--preset demo] [--seeds 0 1] [--only clear overcast]
+
+Conditions run in the order listed (the most telling first).
+
+Prints a markdown table; surveys and products are kept in ``--work`` (default
+``/tmp/clearfast-conditions``) and reused when present.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import time
+from pathlib import Path
+
+import numpy as np
+
+from clearfast_gis.evaluation import mine_statuses, score_against_truth
+from clearfast_gis.pipeline import ProcessOptions, process_survey
+from clearfast_gis.simulate import parse_scenario, preset, simulate_survey
+
+ROOT = Path(__file__).resolve().parents[1]
+REAL_TOA5 = (ROOT.parent / "shared" / "data" / "real-field-files" / "toa5"
+             / "LouisPauchet__data_SN6134_ClimatVUE_ClimatVIEW_1h.dat")
+REAL_DAY = "2024-07-22T00:00:00Z"
+
+NICOSIA = {"latitude_deg": 35.17, "longitude_deg": 33.36, "epsg": 32636}
+CHAD = {"name": "N'Djamena region (simulated)", "latitude_deg": 12.1, "longitude_deg": 15.0,
+        "epsg": 32633}
+ANGOLA = {"name": "Cuito Cuanavale (simulated)", "latitude_deg": -15.16,
+          "longitude_deg": 19.17, "epsg": 32734}
+SVALBARD = {"name": "Longyearbyen (station record)", "latitude_deg": 78.22,
+            "longitude_deg": 15.65, "epsg": 32633}
+
+CONDITIONS: dict[str, dict] = {
+    "clear": {},
+    "overcast": {"weather": {"cloud_cover": 1.0, "air_temp_c": [11, 17]}},
+    "partly cloudy 0.5": {"weather": {"cloud_cover": 0.5}},
+    "after rain (8 mm, loam)": {
+        "soil": {"type": "loam", "moisture": 0.35},
+        "weather": {"rain": [{"start_utc": "2026-11-15T02:00:00Z", "duration_h": 1.5,
+                              "total_mm": 8.0}], "cloud_cover": [[0, 0.9], [6, 0.3]]}},
+    "clay": {"soil": {"type": "clay", "moisture": 0.4}},
+    "grass 40 %": {"vegetation_cover": 0.4},
+    "tropics, dry season (12 N, Feb)": {
+        "site": CHAD, "start_utc": "2026-02-15T00:00:00Z",
+        "weather": {"air_temp_c": [18, 35], "rh_pct": [15, 35]},
+        "soil": {"type": "loamy_sand", "moisture": 0.15}},
+    "southern summer (15 S, Jan)": {
+        "site": ANGOLA, "start_utc": "2026-01-15T00:00:00Z",
+        "weather": {"air_temp_c": [17, 29], "rh_pct": [55, 85], "cloud_cover": 0.3},
+        "soil": {"type": "sand", "moisture": 0.3}},
+    "southern winter (15 S, Jul)": {
+        "site": ANGOLA, "start_utc": "2026-07-15T00:00:00Z",
+        "weather": {"air_temp_c": [7, 27], "rh_pct": [20, 45]},
+        "soil": {"type": "sand", "moisture": 0.1}},
+    "real weather (Svalbard, 22 Jul 2024)": {
+        "site": SVALBARD, "start_utc": REAL_DAY, "weather": {"file": str(REAL_TOA5)},
+        "soil": {"type": "gravel", "moisture": 0.3}},
+    "loam": {"soil": {"type": "loam", "moisture": 0.35}},
+    "clear, sand evaporating": {"soil": {"type": "sand", "moisture": 0.3}},
+    "northern summer (35 N, Jul)": {
+        "site": NICOSIA, "start_utc": "2026-07-15T00:00:00Z",
+        "weather": {"air_temp_c": [22, 37], "rh_pct": [30, 55]}},
+    "northern winter (35 N, Jan)": {
+        "site": NICOSIA, "start_utc": "2026-01-15T00:00:00Z",
+        "weather": {"air_temp_c": [5, 15], "rh_pct": [65, 85]}},
+    "clouds building 0.2 -> 0.9": {"weather": {"cloud_cover": [[0, 0.2], [12, 0.9],
+                                                               [24, 0.5]]}},
+    "windy, gusts": {"weather": {"wind_scale": 2.5, "gusts": 0.3}},
+}
+
+
+def score(survey: Path, products: Path) -> dict:
+    """Pd, FA/m2, centre RMS, depth MAE of confident depths (0-4 cm and all), honest share."""
+    s = score_against_truth(survey, products)
+    statuses = mine_statuses(survey, products)
+    conf = [m for m in statuses if m.confident]
+    manifest = json.loads((products / "products.json").read_text())
+    return {"score": s, "honest": (sum(m.honest for m in statuses), len(statuses)),
+            "mae_shallow": [abs(m.depth_m - m.true_depth_m) for m in conf
+                            if m.true_depth_m <= 0.04],
+            "mae_all": [abs(m.depth_m - m.true_depth_m) for m in conf],
+            "day": manifest.get("day_contrast"),
+            "warned": any("low thermal contrast" in w for w in manifest.get("warnings", []))}
+
+
+def _mean_cm(v: list[float]) -> str:
+    return f"{100 * np.mean(v):.2f} ({len(v)})" if v else "- (0)"
+
+
+def main() -> None:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--preset", default="demo")
+    ap.add_argument("--seeds", type=int, nargs="+", default=[0, 1])
+    ap.add_argument("--only", nargs="*", help="conditions whose name starts with these")
+    ap.add_argument("--work", default="/tmp/clearfast-conditions")
+    args = ap.parse_args()
+    work = Path(args.work)
+    work.mkdir(parents=True, exist_ok=True)
+    names = [n for n in CONDITIONS
+             if not args.only or any(n.startswith(o) for o in args.only)]
+    print("| condition | seed | Pd (<= 5 cm) | FA/m2 | centre RMS cm | depth MAE cm 0-4 cm (n) "
+          "| depth MAE cm all (n) | honest statuses | day: AP mine at 1 / 5 cm, noise (K) "
+          "| shows to | sun (clear-sky index), rain | low-contrast warning | simulate s "
+          "| process s |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
+    for name in names:
+        doc = {"format": "clearfast-scenario", "format_version": 1, "preset": args.preset,
+               **CONDITIONS[name]}
+        slug = "".join(c if c.isalnum() else "-" for c in name.lower()).strip("-")
+        for seed in args.seeds:
+            base = work / f"{args.preset}-{slug}-s{seed}"
+            base.mkdir(parents=True, exist_ok=True)
+            cfg = parse_scenario(doc, None, preset(args.preset)).config
+            survey, products = base / "survey", base / "products"
+            t0 = time.perf_counter()
+            if not (survey / "survey.json").exists():
+                simulate_survey(survey, cfg, seed=seed)
+            t_sim = time.perf_counter() - t0
+            t0 = time.perf_counter()
+            process_survey(survey, products, ProcessOptions(), from_stage="detection")
+            t_proc = time.perf_counter() - t0
+            r = score(survey, products)
+            s, day = r["score"], r["day"] or {}
+            c = dict(zip(day.get("depths_m", []), day.get("peak_contrast_k", []), strict=True))
+            deep = day.get("deepest_showing_m")
+            csi = day.get("clear_sky_index")
+            print(f"| {name} | {seed} | {s.n_detected}/{s.n_mines} = "
+                  f"{s.detection_probability:.2f} | {s.false_alarms_per_m2:.3f} | "
+                  f"{100 * np.sqrt(np.mean(np.square(s.centre_errors_m))) if s.centre_errors_m else float('nan'):.1f} | "  # noqa: E501
+                  f"{_mean_cm(r['mae_shallow'])} | {_mean_cm(r['mae_all'])} | "
+                  f"{r['honest'][0]}/{r['honest'][1]} | "
+                  f"{c.get(0.01, float('nan')):.2f} / {c.get(0.05, float('nan')):.2f}, "
+                  f"{day.get('noise_k', float('nan')):.2f} | "
+                  f"{'-' if deep is None else f'{100 * deep:.0f} cm'} | "
+                  f"{'-' if csi is None else f'{csi:.2f}'}, {day.get('rain_mm', 0):.1f} mm | "
+                  f"{'yes' if r['warned'] else 'no'} | {t_sim:.0f} | {t_proc:.0f} |",
+                  flush=True)
+
+
+if __name__ == "__main__":
+    main()

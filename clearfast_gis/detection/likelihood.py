@@ -1,0 +1,137 @@
+"""Mine likelihood ``p_mine`` of a suspect and the planner's ``priority`` order.
+
+The model (docs/likelihood.md) is a logistic regression on features of the suspect record:
+
+============  ==========================================================================
+feature       definition
+============  ==========================================================================
+strength      ``log10(max(score, 0.1))``: the detection score (contrast-to-noise ratio
+              times shape and size terms, docs/detection.md)
+size_misfit   ``min_k |ln(diameter_m / D_k)|`` over the survey's mine types ``D_k``
+              (:data:`MINE_TYPE_DIAMETERS_M`): 0 for a footprint the size of a mine type
+circularity   0-1 (docs/detection.md)
+diurnal       1 for ``warm_day_cool_night`` (an explosive's signature), else 0
+cool_by_day   1 when the daytime contrast is negative (stones, metal), else 0
+alpha_misfit  characterised diffusivity only: ``min(z^2, 9)`` with
+              ``z = (log10 alpha - log10 ALPHA_EXPLOSIVE) / sqrt(s^2 + 0.15^2)``, s the
+              estimate's log10 sigma; 0 when not characterised
+characterised 1 when the inversion's status is ``ok``, else 0
+coverage      ``n_scans / scans of the survey``
+============  ==========================================================================
+
+``p_mine = 1 / (1 + exp(-(b0 + sum_i b_i (x_i - mean_i) / scale_i)))``. The coefficients, the
+feature means and scales, the surveys the model was fitted on and its reliability table are
+data (``clearfast_gis/data/likelihood.json``), written by ``benchmarks/calibrate_likelihood.py``
+from simulated surveys that are never the ones it is scored on. Nothing is fitted at run time.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+from collections.abc import Mapping
+from functools import lru_cache
+from importlib import resources
+
+import numpy as np
+
+FEATURES = ("strength", "size_misfit", "circularity", "diurnal", "cool_by_day",
+            "alpha_misfit", "characterised", "coverage")
+"""Model features, in the order of the coefficients."""
+
+MINE_TYPE_DIAMETERS_M = {"AP M2A4": 0.104, "AT M6A2": 0.337}
+"""Diameters of the mine types expected on the surveys, m."""
+
+LOG10_ALPHA_EXPLOSIVE = math.log10(1.0e-7)
+"""log10 diffusivity of an explosive fill (TNT 1.0e-7 m2/s)."""
+
+ALPHA_CLASS_SPREAD = 0.15
+"""Spread of explosive and casing diffusivities, log10 units (as the material cue's)."""
+
+PARAMETERS = "likelihood.json"
+"""The fitted model's file in ``clearfast_gis/data``."""
+
+
+def features(record: Mapping, n_scans_total: int) -> np.ndarray:
+    """Feature vector (len(FEATURES),) of one suspect record (module notes for units)."""
+    score = float(record.get("score") or 0.0)
+    d = record.get("diameter_m")
+    d = math.nan if d is None else float(d)
+    size = (min(abs(math.log(d / dk)) for dk in MINE_TYPE_DIAMETERS_M.values())
+            if math.isfinite(d) and d > 0 else 3.0)
+    circ = float(record.get("circularity") or 0.0)
+    diurnal = 1.0 if record.get("diurnal_behaviour") == "warm_day_cool_night" else 0.0
+    day = record.get("contrast_day_k")
+    cool = 1.0 if day is not None and math.isfinite(float(day)) and float(day) < 0 else 0.0
+    ok = record.get("status") == "ok"
+    alpha = record.get("diffusivity_m2s")
+    alpha_misfit = 0.0
+    if ok and alpha is not None and math.isfinite(float(alpha)) and float(alpha) > 0:
+        sa = record.get("diffusivity_sigma_m2s")
+        s = (float(sa) / (float(alpha) * math.log(10.0))
+             if sa is not None and math.isfinite(float(sa)) else 0.0)
+        z = (math.log10(float(alpha)) - LOG10_ALPHA_EXPLOSIVE) / math.hypot(s, ALPHA_CLASS_SPREAD)
+        alpha_misfit = min(z * z, 9.0)
+    coverage = float(record.get("n_scans") or 0) / max(n_scans_total, 1)
+    return np.array([math.log10(max(score, 0.1)), min(size, 3.0), circ, diurnal, cool,
+                     alpha_misfit, 1.0 if ok else 0.0, coverage])
+
+
+@lru_cache(maxsize=1)
+def load_model() -> dict:
+    """The fitted model (``clearfast_gis/data/likelihood.json``)."""
+    text = resources.files("clearfast_gis").joinpath("data", PARAMETERS).read_text()
+    model = json.loads(text)
+    if tuple(model["features"]) != FEATURES:
+        raise ValueError(f"{PARAMETERS}: features {model['features']} are not {FEATURES}")
+    return model
+
+
+def p_mine_from_features(x: np.ndarray, model: Mapping) -> np.ndarray:
+    """``p_mine`` of feature rows ``x`` (M, len(FEATURES)) under ``model``, (M,) in 0-1."""
+    x = np.atleast_2d(np.asarray(x, dtype=float))
+    z = (x - np.asarray(model["mean"])) / np.asarray(model["scale"])
+    eta = float(model["intercept"]) + z @ np.asarray(model["coef"])
+    return 1.0 / (1.0 + np.exp(-eta))
+
+
+def rank(records: list[dict], n_scans_total: int, model: Mapping | None = None) -> list[dict]:
+    """The records with ``p_mine`` (0-1, 3 decimals) and ``priority`` (1 = first), sorted by
+    priority: decreasing ``p_mine``, ties by decreasing score, then by ``anomaly_id``."""
+    if not records:
+        return []
+    model = load_model() if model is None else model
+    x = np.array([features(r, n_scans_total) for r in records])
+    p = p_mine_from_features(x, model)
+    out = [{**r, "p_mine": round(float(pi), 3)} for r, pi in zip(records, p, strict=True)]
+    out.sort(key=lambda r: (-r["p_mine"], -float(r.get("score") or 0.0), str(r["anomaly_id"])))
+    for i, r in enumerate(out, start=1):
+        r["priority"] = i
+    return out
+
+
+def screen_and_rank(records: list[dict], n_scans_total: int,
+                    model: Mapping | None = None) -> list[dict]:
+    """Every detection record, in the input order, with ``set_aside_reason`` (candidates,
+    :mod:`clearfast_gis.detection.screening`) or ``p_mine`` and ``priority`` (suspects); the
+    fields a record does not get are None."""
+    from clearfast_gis.detection.screening import screen
+
+    suspects, candidates = screen(records, n_scans_total)
+    ranked = {r["anomaly_id"]: r for r in rank(suspects, n_scans_total, model)}
+    aside = {r["anomaly_id"]: r for r in candidates}
+    out = []
+    for r in records:
+        aid = r["anomaly_id"]
+        if aid in ranked:
+            out.append({**ranked[aid], "set_aside_reason": None})
+        else:
+            out.append({**aside[aid], "p_mine": None, "priority": None})
+    return out
+
+
+def likelihood_model_id() -> str:
+    """Short description of the fitted model (``products.json``): its version and the surveys
+    it was fitted on."""
+    m = load_model()
+    return f"{m['version']} (fitted on {', '.join(m['fitted_on'])})"

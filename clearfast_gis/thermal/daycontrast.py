@@ -1,0 +1,146 @@
+"""How much thermal contrast a survey's day gave, from what its logs say.
+
+The thermal model of the site (the weather log's forcing, the soil fitted to the
+thermocouples and the background) is run for a reference mine, a 10.4 cm x 8 cm TNT
+cylinder (the M2A4 AP mine), at a few depths. Its contrast over the survey's scans, against
+the scene's noise (3 sigma in at least a quarter of the scans, as the detector votes), says
+down to which depth a buried mine could show on that day: a
+clear day in sand gives kelvins at 1 cm, an overcast day after rain a few tenths or less.
+The sun is compared with the clear sky of the site and date (clear-sky index).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from clearfast_gis.thermal.forcing import Forcing
+from clearfast_gis.thermal.forward import BuriedObject, ObjectModel
+from clearfast_gis.thermal.materials import MATERIALS, Soil
+from clearfast_gis.thermal.solar import clear_sky_ghi, solar_position
+
+#: Reference mine: radius and height (m) of the M2A4 AP mine, TNT-filled.
+REFERENCE_RADIUS_M = 0.052
+REFERENCE_HEIGHT_M = 0.08
+#: Depths at which the day's contrast is stated, m.
+REFERENCE_DEPTHS_M = (0.0, 0.01, 0.02, 0.03, 0.05, 0.08, 0.10)
+#: A contrast shows when it exceeds this many noise sigmas (the inversion's weak-contrast bar)
+SHOW_SNR = 3.0
+#: ... in at least this share of the scans (the detector's default voting level).
+SHOW_SCAN_SHARE = 0.25
+
+
+@dataclass(frozen=True)
+class DayContrast:
+    """The day's contrast for the reference mine.
+
+    Attributes
+    ----------
+    depths_m : ndarray, shape (D,)
+        Depths of the reference mine, m.
+    peak_contrast_k : ndarray, shape (D,)
+        Peak |contrast| over the scans (centre minus background), K.
+    showing_share : ndarray, shape (D,)
+        Share of the scans whose |contrast| reaches ``SHOW_SNR`` noise sigmas.
+    noise_k : float
+        1-sigma noise of a measured contrast, K.
+    clear_sky_index : float
+        Measured over clear-sky solar energy of the daylight hours (1 clear, ~0.3 overcast);
+        NaN without daylight.
+    rain_mm : float
+        Rain logged over the record, mm.
+    """
+
+    depths_m: np.ndarray
+    peak_contrast_k: np.ndarray
+    showing_share: np.ndarray
+    noise_k: float
+    clear_sky_index: float
+    rain_mm: float
+
+    @property
+    def deepest_showing_m(self) -> float:
+        """Deepest reference depth whose contrast reaches ``SHOW_SNR`` noise sigmas in at
+        least ``SHOW_SCAN_SHARE`` of the scans, m; NaN when even the shallowest does not."""
+        shows = self.showing_share >= SHOW_SCAN_SHARE - 1e-9
+        return float(self.depths_m[shows].max()) if shows.any() else float("nan")
+
+    def contrast_at(self, depth_m: float) -> float:
+        """Peak contrast at ``depth_m`` (linear between the reference depths), K."""
+        return float(np.interp(depth_m, self.depths_m, self.peak_contrast_k))
+
+    def as_dict(self) -> dict:
+        """JSON-ready record (products.json ``day_contrast``)."""
+        return {"reference": "TNT cylinder 10.4 cm x 8 cm (AP mine)",
+                "depths_m": [float(d) for d in self.depths_m],
+                "peak_contrast_k": [round(float(c), 4) for c in self.peak_contrast_k],
+                "showing_share": [round(float(c), 3) for c in self.showing_share],
+                "noise_k": round(float(self.noise_k), 4),
+                "deepest_showing_m": None if not np.isfinite(self.deepest_showing_m)
+                else float(self.deepest_showing_m),
+                "clear_sky_index": None if not np.isfinite(self.clear_sky_index)
+                else round(float(self.clear_sky_index), 3),
+                "rain_mm": round(float(self.rain_mm), 1)}
+
+
+def clear_sky_index(forcing: Forcing, lat_deg: float, lon_deg: float) -> float:
+    """Logged solar energy over the Haurwitz clear-sky energy of the record's daylight."""
+    elev, _ = solar_position(lat_deg, lon_deg, forcing.time_s)
+    clear = clear_sky_ghi(elev)
+    day = clear > 50.0
+    if day.sum() < 2:
+        return float("nan")
+    return float(np.trapezoid(forcing.solar_wm2[day], forcing.time_s[day])
+                 / np.trapezoid(clear[day], forcing.time_s[day]))
+
+
+def day_contrast(forcing: Forcing, soil: Soil, scan_time_s: np.ndarray, noise_k: float,
+                 lat_deg: float, lon_deg: float,
+                 depths_m: tuple[float, ...] = REFERENCE_DEPTHS_M) -> DayContrast:
+    """The reference mine's peak contrast at ``depths_m`` over the scans (see the module).
+
+    Parameters
+    ----------
+    forcing : Forcing
+        The weather log's forcing.
+    soil : Soil
+        The site soil as the chain fitted it.
+    scan_time_s : ndarray, shape (S,)
+        Scan times, UTC epoch seconds.
+    noise_k : float
+        1-sigma noise of a measured contrast, K.
+    lat_deg, lon_deg : float
+        Site.
+    """
+    model = ObjectModel(soil, forcing, scan_time_s, REFERENCE_RADIUS_M)
+    peaks, shares = [], []
+    for d in depths_m:
+        obj = BuriedObject(REFERENCE_RADIUS_M, REFERENCE_HEIGHT_M, d, MATERIALS["tnt"])
+        c = np.abs(model.surface_at(obj, [0.0])[:, 0] - model.background_k)
+        peaks.append(float(np.max(c)))
+        shares.append(float(np.mean(c >= SHOW_SNR * noise_k)))
+    dt_h = np.diff(forcing.time_s, prepend=forcing.time_s[0]) / 3600.0
+    rain = float(np.sum(forcing.rain_mm_h * dt_h))
+    return DayContrast(np.asarray(depths_m, float), np.asarray(peaks), np.asarray(shares),
+                       float(noise_k),
+                       clear_sky_index(forcing, lat_deg, lon_deg), rain)
+
+
+def contrast_noise_k(inversions: dict, survey=None, clutter_k: float = float("nan")) -> float:
+    """1-sigma noise of a measured contrast, K: the larger of the median residual rms of the
+    anomalies' fits (registration and seams included) and the background clutter of the
+    mosaics (``clutter_k``, :func:`clearfast_gis.detection.clutter.background_clutter_k`);
+    without either, the camera's NETD from ``survey.json``, else 0.05 K."""
+    rms = [inv.residual_rms_k for inv in inversions.values()
+           if np.isfinite(inv.residual_rms_k)]
+    found = [float(np.median(rms))] if rms else []
+    if np.isfinite(clutter_k):
+        found.append(float(clutter_k))
+    if found:
+        return max(found)
+    if survey is not None:
+        netd = survey.manifest.get("camera", {}).get("netd_k")
+        if isinstance(netd, int | float) and netd > 0:
+            return float(netd)
+    return 0.05
