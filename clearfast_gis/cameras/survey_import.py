@@ -14,8 +14,6 @@ renamed: nothing half-written is ever visible.
 
 from __future__ import annotations
 
-import csv
-import io
 import math
 import os
 import shutil
@@ -28,10 +26,11 @@ from pathlib import Path
 import numpy as np
 
 from clearfast_gis.cameras import RadiometricFrame, exiftool, read_frames
+from clearfast_gis.cameras.csv_tables import csv_records, table_time, table_value
 from clearfast_gis.errors import InvalidInput
 from clearfast_gis.progress import NULL_PROGRESS, Progress
 from clearfast_gis.radiometry.camera import CameraRadiometry
-from clearfast_gis.timeutil import format_utc, parse_utc
+from clearfast_gis.timeutil import format_utc
 
 TEMPERATURE_COUNT_K = 0.01
 """Kelvin per stored count for float temperature frames (0-655 K in uint16)."""
@@ -55,6 +54,10 @@ class ImportSpec:
         Pose table, NMEA log, TOA5 weather table, thermocouple log, ``mission.json``.
     markers : Path or None
         ``markers.csv``.
+    blackbody, blackbody_log : Path or None
+        Blackbody table (``file,frame,event,blackbody,time_utc``, the camera files beside it)
+        and blackbody temperature log (``time_utc,bb1_c,bb2_c``); both or neither
+        (:mod:`clearfast_gis.cameras.blackbody_import`).
     station_profile : Path or None
         The weather station's / soil logger's profile (their own column names and units,
         ``docs/acquire.md``); copied into the survey as ``station_profile.json``.
@@ -88,6 +91,8 @@ class ImportSpec:
     mission: Path
     antenna_to_camera_m: tuple[float, float, float]
     markers: Path | None = None
+    blackbody: Path | None = None
+    blackbody_log: Path | None = None
     station_profile: Path | None = None
     pan_zero_azimuth_deg: float = 0.0
     tilt_zero_deg: float = 0.0
@@ -123,48 +128,14 @@ def read_pose_table(path: Path) -> list[PoseRow]:
     """The pose table: ``file,frame,scan,position,time_utc,pan_deg,tilt_deg`` (header row;
     ``frame`` default 0; ``time_utc``, ``pan_deg``, ``tilt_deg`` may be empty or absent, then
     they come from the frame's tags). Errors name the file, line and column."""
-    try:
-        text = path.read_text(encoding="utf-8-sig")
-    except (OSError, UnicodeDecodeError) as exc:
-        raise InvalidInput(f"cannot read: {exc}", path) from None
-    reader = csv.DictReader(io.StringIO(text))
-    header = [h.strip() for h in (reader.fieldnames or [])]
-    missing = [c for c in ("file", "scan", "position") if c not in header]
-    if missing:
-        raise InvalidInput(f"missing column(s) {', '.join(missing)} (expected "
-                           f"{','.join(POSE_COLUMNS)})", path, "line 1")
-    unknown = [c for c in header if c not in POSE_COLUMNS]
-    if unknown:
-        raise InvalidInput(f"unknown column(s) {', '.join(unknown)}", path, "line 1")
     rows, seen_frame, seen_pos = [], {}, {}
-    for n, rec in enumerate(reader, start=2):
-        rec = {(k or "").strip(): (v or "").strip() for k, v in rec.items()}
+    for n, rec in csv_records(path, ("file", "scan", "position"), POSE_COLUMNS):
 
         def get(col: str, kind, required: bool = False, line: int = n, rec: dict = rec):
-            val = rec.get(col, "")
-            if val == "":
-                if required:
-                    raise InvalidInput("empty", path, f"line {line}: {col}")
-                return None
-            try:
-                out = kind(val)
-            except ValueError:
-                raise InvalidInput(f"not {'an integer' if kind is int else 'a number'}: "
-                                   f"{val!r}", path, f"line {line}: {col}") from None
-            if kind is float and not math.isfinite(out):
-                raise InvalidInput(f"not a finite number: {val!r}", path, f"line {line}: {col}")
-            if kind is int and out < 0:
-                raise InvalidInput(f"negative: {val!r}", path, f"line {line}: {col}")
-            return out
+            return table_value(rec, col, kind, path, line, required)
 
         def utc(line: int = n, rec: dict = rec) -> float | None:
-            val = rec.get("time_utc", "")
-            if not val:
-                return None
-            try:
-                return parse_utc(val)
-            except ValueError as exc:
-                raise InvalidInput(str(exc), path, f"line {line}: time_utc") from None
+            return table_time(rec, path, line)
 
         if not rec.get("file"):
             raise InvalidInput("empty", path, f"line {n}: file")
@@ -368,11 +339,14 @@ def _site(spec: ImportSpec, mission: dict):
 def import_survey(spec: ImportSpec, out: str | os.PathLike, overwrite: bool = False,
                   progress: Progress = NULL_PROGRESS) -> ImportResult:
     """Build the survey folder ``out`` (see the module notes); returns what was written."""
+    from clearfast_gis.cameras import blackbody_import as bbi
     from clearfast_gis.survey import (
+        read_blackbody_log,
         read_markers,
         read_mission,
         read_soil_log,
         validate_survey,
+        write_blackbody_frames_table,
         write_frames_table,
         write_survey_json,
         write_tiff_stack,
@@ -391,7 +365,16 @@ def import_survey(spec: ImportSpec, out: str | os.PathLike, overwrite: bool = Fa
     if spec.markers is not None:
         read_markers(spec.markers, str(spec.markers))
     poses = read_pose_table(spec.poses)
-    files = expand_frames(spec.frames)
+    bb_rows: list = []
+    if (spec.blackbody is None) != (spec.blackbody_log is None):
+        raise InvalidInput("blackbody frames need their temperature log and the log its frames "
+                           "(give both --blackbody and --blackbody-log)",
+                           spec.blackbody or spec.blackbody_log)
+    if spec.blackbody is not None:
+        read_blackbody_log(spec.blackbody_log, str(spec.blackbody_log))
+        bb_rows = bbi.read_blackbody_table(spec.blackbody)
+    bb_files = {r.path.resolve() for r in bb_rows}
+    files = [p for p in expand_frames(spec.frames) if p.resolve() not in bb_files]
     progress.start("import", len(files))
     frames: list[RadiometricFrame] = []
     all_tags: dict = {}
@@ -403,11 +386,21 @@ def import_survey(spec: ImportSpec, out: str | os.PathLike, overwrite: bool = Fa
                                   offset_k=spec.offset_k, tags=all_tags.pop(str(p))))
         progress.advance(1, file=p.name)
     progress.close()
-    rad = _check_same_camera(frames)
+    bb_frames = bbi.read_blackbody_frames(bb_rows, spec.blackbody, dict(
+        unit=spec.unit, scale_k=spec.scale_k, offset_k=spec.offset_k)) if bb_rows else []
+    rad = _check_same_camera(frames + [f for _r, f in bb_frames])
     matched = _match(frames, poses, spec)
+    bb_matched = []
+    for row, fr in bb_frames:
+        t = row.time_s if row.time_s is not None else frame_time_s(fr, spec)
+        if t is None:
+            raise InvalidInput(f"no time_utc for {row.path.name} frame {row.frame}: neither "
+                               "the table nor the file's tags give it", spec.blackbody,
+                               f"line {row.line}: time_utc")
+        bb_matched.append((row, fr, float(t)))
     lat, lon, ground = _site(spec, mission)
     camera = _camera_section(frames, spec, mission, rad)
-    times = np.array([m[2] for m in matched])
+    times = np.array([m[2] for m in matched] + [m[2] for m in bb_matched])
     scans = sorted({m[1].scan for m in matched})
     parent = out.resolve().parent
     parent.mkdir(parents=True, exist_ok=True)
@@ -430,6 +423,14 @@ def import_survey(spec: ImportSpec, out: str | os.PathLike, overwrite: bool = Fa
         for key, src in (("mission", spec.mission), ("gnss", spec.gnss),
                          ("weather", spec.weather), ("soil", spec.soil)):
             shutil.copyfile(src, tmp / names[key])
+        if bb_matched:
+            stacks, bb_table = bbi.blackbody_stacks(bb_matched, stored_counts)
+            for rel, stack in stacks.items():
+                write_tiff_stack(tmp / rel, stack)
+            write_blackbody_frames_table(tmp / bbi.FRAMES_TABLE,
+                                         {k: np.asarray(v) for k, v in bb_table.items()})
+            shutil.copyfile(spec.blackbody_log, tmp / bbi.LOG_NAME)
+            names["blackbody_frames"], names["blackbody_log"] = bbi.FRAMES_TABLE, bbi.LOG_NAME
         if spec.markers is not None:
             shutil.copyfile(spec.markers, tmp / "markers.csv")
             names["markers"] = "markers.csv"

@@ -12,7 +12,8 @@ from clearfast_gis.cli.options import make_progress, overwrite_opt, progress_opt
 from clearfast_gis.errors import ClearfastError, InvalidInput
 
 LAYOUT_NAME = "import.json"
-PATH_KEYS = ("poses", "gnss", "weather", "soil", "mission", "markers", "station_profile")
+PATH_KEYS = ("poses", "gnss", "weather", "soil", "mission", "markers", "station_profile",
+             "blackbody", "blackbody_log")
 
 
 def _triple(text: str | None) -> tuple[float, float, float] | None:
@@ -75,6 +76,11 @@ def read_layout(folder: Path) -> dict:
               help="mission.json of clearfast plan.")
 @click.option("--markers", type=click.Path(exists=True, dir_okay=False),
               help="markers.csv (id,lat_deg,lon_deg,description).")
+@click.option("--blackbody", type=click.Path(exists=True, dir_okay=False),
+              help="Blackbody table: file,frame,event,blackbody(1|2),time_utc; the camera files "
+              "beside it (docs/import.md).")
+@click.option("--blackbody-log", type=click.Path(exists=True, dir_okay=False),
+              help="Blackbody temperature log (time_utc,bb1_c,bb2_c), with --blackbody.")
 @click.option("--station-profile", type=click.Path(exists=True, dir_okay=False),
               help="Station profile of the weather station / soil logger (their own column "
               "names and units, docs/acquire.md).")

@@ -3,8 +3,10 @@
 With a self-calibrated camera (``camera.radiometry``) the blackbody frames are not needed to
 calibrate; when they exist they check the camera: at each event the camera's own at-sensor
 temperature of each blackbody (median over the central half of the mean blackbody image)
-against the blackbody log, and the gain and offset that would map the camera onto the log
-(``T_log = gain * T_camera + offset``, kelvin). ``products.json`` records them
+against the blackbody log, and the gain and offset that would map the camera onto the log,
+the offset taken at the ambient blackbody 2 (``T_log = T2_camera + offset + gain * (T_camera -
+T2_camera)``, kelvin): referred to 0 K instead, a 10 K blackbody span would multiply a few
+millikelvin of camera noise into tenths of a kelvin of offset. ``products.json`` records them
 (``camera_check``); the chain does not apply them.
 """
 
@@ -35,7 +37,8 @@ def camera_blackbody_check(survey: Survey) -> list[dict]:
     -------
     list of dict
         ``event, band, time_utc, bb1_log_c, bb1_camera_c, bb2_log_c, bb2_camera_c`` (degrees
-        C, 3 decimals), ``gain`` (dimensionless) and ``offset_k`` (kelvin); empty for a survey
+        C, 3 decimals), ``gain`` (dimensionless, blackbody span of the log over the camera's)
+        and ``offset_k`` (kelvin, log minus camera at blackbody 2); empty for a survey
         without camera radiometry or without blackbody files.
     """
     from clearfast_gis.survey import read_blackbody_frames, read_blackbody_log
@@ -54,7 +57,7 @@ def camera_blackbody_check(survey: Survey) -> list[dict]:
                  for img in (e.bb1_mean, e.bb2_mean)]
         gain = (t_log[0] - t_log[1]) / (t_cam[0] - t_cam[1]) \
             if abs(t_cam[0] - t_cam[1]) > 1e-6 else float("nan")
-        offset = t_log[1] - gain * t_cam[1]
+        offset = t_log[1] - t_cam[1]
         out.append({"event": int(e.event), "band": int(e.band),
                     "time_utc": format_utc(e.time_s, "seconds"),
                     "bb1_log_c": round(t_log[0] - ZERO_CELSIUS_K, 3),

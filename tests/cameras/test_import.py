@@ -173,3 +173,122 @@ def test_calibrate_uses_the_camera_radiometry(camera_dir, tmp_path):
     # well under a kelvin
     assert doc["scans"][0]["mean_c"] == pytest.approx(15.0, abs=1.0)
     assert doc["scans"][0]["invalid_pixels"] == 0
+
+
+# -- blackbody frames -----------------------------------------------------------------------
+
+N_BB = 3  # frames per blackbody and event
+
+
+def _write_blackbody_frames(d, demo_survey, offset_k: float) -> None:
+    """Blackbody frames of events 0 and 1 as degrees C TIFFs in the camera folder: the log's
+    temperature at each frame's time (the demo survey's blackbody times) + ``offset_k`` and
+    0.02 K noise; ``blackbody.csv`` names them (rows shuffled: matched by name, not order)."""
+    from clearfast_gis.radiometry.calibration import blackbody_temperature_at
+    from clearfast_gis.survey import read_blackbody_log
+    from clearfast_gis.timeutil import parse_utc
+
+    log = read_blackbody_log(demo_survey / "blackbody" / "temperatures.csv")
+    shutil.copy(demo_survey / "blackbody" / "temperatures.csv", d / "bb_log.csv")
+    with open(demo_survey / "blackbody" / "frames.csv", newline="") as fh:
+        src = [r for r in csv.DictReader(fh) if r["band"] == "0" and r["event"] in "01"]
+    rng = np.random.default_rng(1)
+    rows = []
+    for ev in ("0", "1"):
+        for bb in ("1", "2"):
+            for k, r in enumerate([r for r in src if (r["event"], r["blackbody"]) == (ev, bb)]
+                                  [:N_BB]):
+                temps = log.bb1_c if bb == "1" else log.bb2_c
+                t_k = float(blackbody_temperature_at(log.time_s, temps + 273.15,
+                                                     parse_utc(r["time_utc"])))
+                img = t_k - 273.15 + offset_k + rng.normal(0.0, 0.02, (128, 160))
+                name = f"bb_e{ev}_b{bb}_{k}.tif"
+                write_tiff(d / "camera" / name, img.astype(np.float32), "degC")
+                rows.append([f"camera/{name}", 0, ev, bb, r["time_utc"]])
+    rng.shuffle(rows)
+    with open(d / "blackbody.csv", "w", newline="") as fh:
+        w = csv.writer(fh)
+        w.writerow(["file", "frame", "event", "blackbody", "time_utc"])
+        w.writerows(rows)
+
+
+def _bb_spec(d):
+    return spec(d, blackbody=d / "blackbody.csv", blackbody_log=d / "bb_log.csv")
+
+
+@pytest.mark.parametrize("offset_k", [0.0, 0.5])
+def test_blackbody_frames_check_the_camera(camera_dir, demo_survey, tmp_path, offset_k):
+    from clearfast_gis.radiometry.camera_check import camera_blackbody_check
+
+    d = _edited(camera_dir, tmp_path, lambda d: _write_blackbody_frames(d, demo_survey,
+                                                                        offset_k))
+    res = import_survey(_bb_spec(d), tmp_path / "survey")
+    assert res.n_frames == N_FRAMES  # the blackbody files in the camera folder are not poses
+    report = validate_survey(tmp_path / "survey")
+    assert report.valid, [p.line() for p in report.problems]
+    check = camera_blackbody_check(read_survey(tmp_path / "survey"))
+    assert [c["event"] for c in check] == [0, 1]
+    for c in check:
+        assert c["bb1_log_c"] - c["bb2_log_c"] > 5.0  # a real pair, heated vs ambient
+        assert c["gain"] == pytest.approx(1.0, abs=0.005)
+        # offset = log - camera at blackbody 2: a camera reading 0.5 K high gives -0.5 K
+        assert c["offset_k"] == pytest.approx(-offset_k, abs=0.01)
+        assert c["bb1_camera_c"] - c["bb1_log_c"] == pytest.approx(offset_k, abs=0.01)
+
+
+def _bb_lines(d, change):
+    lines = (d / "blackbody.csv").read_text().splitlines()
+    (d / "blackbody.csv").write_text("\n".join(change(lines)) + "\n")
+
+
+@pytest.mark.parametrize("change,message", [
+    (lambda ls: ls[:1] + [ls[1].replace("camera/", "camera/ghost_")] + ls[2:],
+     r"blackbody\.csv: line 2: file: no camera file camera/ghost_bb"),
+    (lambda ls: ls + [ls[3]], r"blackbody\.csv: line 14: file camera/bb_\S+ frame 0 already "
+     r"on line 4"),
+    (lambda ls: [ls[0]] + [x for x in ls[1:] if ",1,2," not in x],
+     r"blackbody\.csv: line \d+: event 1 has no frame of blackbody 2"),
+    (lambda ls: ls[:1] + [ls[1].rsplit(",", 2)[0] + ",3," + ls[1].rsplit(",", 1)[1]] + ls[2:],
+     r"blackbody\.csv: line 2: blackbody: not 1 \(heated\) or 2"),
+])
+def test_bad_blackbody_table_is_one_error_and_nothing_written(camera_dir, demo_survey,
+                                                              tmp_path, change, message):
+    def edit(d):
+        _write_blackbody_frames(d, demo_survey, 0.0)
+        _bb_lines(d, change)
+
+    d = _edited(camera_dir, tmp_path, edit)
+    with pytest.raises(InvalidInput, match=message):
+        import_survey(_bb_spec(d), tmp_path / "out")
+    assert [p.name for p in tmp_path.iterdir()] == ["cam"]
+
+
+def test_blackbody_table_needs_its_log(camera_dir, demo_survey, tmp_path):
+    d = _edited(camera_dir, tmp_path, lambda d: _write_blackbody_frames(d, demo_survey, 0.0))
+    with pytest.raises(InvalidInput, match=r"blackbody\.csv: .*--blackbody-log"):
+        import_survey(spec(d, blackbody=d / "blackbody.csv"), tmp_path / "out")
+
+
+@pytest.mark.slow
+def test_cli_import_with_blackbodies_then_process_records_camera_check(camera_dir, demo_survey,
+                                                                       tmp_path):
+    d = _edited(camera_dir, tmp_path, lambda d: _write_blackbody_frames(d, demo_survey, 0.5))
+    cli = [sys.executable, "-m", "clearfast_gis.cli.main"]
+    r = subprocess.run([*cli, "import", str(d / "camera"), "--poses", str(d / "poses.csv"),
+                        "--gnss", str(d / "gnss.nmea"), "--weather", str(d / "weather.dat"),
+                        "--soil", str(d / "soil.csv"), "--mission", str(d / "mission.json"),
+                        "--antenna-to-camera", "0,0,-0.4", "--lens", "equiangular",
+                        "--fov-deg", "24", "--ground-altitude-m", "160",
+                        "--blackbody", str(d / "blackbody.csv"),
+                        "--blackbody-log", str(d / "bb_log.csv"),
+                        "-o", str(tmp_path / "s"), "--progress", "none"],
+                       capture_output=True, text=True, timeout=300)
+    assert r.returncode == 0, r.stderr
+    r = subprocess.run([*cli, "process", str(tmp_path / "s"), "-o", str(tmp_path / "p"),
+                        "--progress", "none"], capture_output=True, text=True, timeout=600)
+    assert r.returncode == 0, r.stderr
+    check = json.loads((tmp_path / "p" / "products.json").read_text())["camera_check"]
+    assert [c["event"] for c in check] == [0, 1]
+    for c in check:  # the blackbody frames were written 0.5 K warm
+        assert c["gain"] == pytest.approx(1.0, abs=0.005)
+        assert c["offset_k"] == pytest.approx(-0.5, abs=0.01)

@@ -28,7 +28,7 @@ def _survey(tmp_path, with_blackbodies: bool = True):
     write_survey_json(tmp_path / "survey.json", m)
     if with_blackbodies:
         # the camera reads the blackbodies 0.3 K low at 35 C and 0.1 K low at 20 C:
-        # T_log = gain * T_cam + offset with gain = 15 / 14.8
+        # gain = 15 / 14.8, offset at blackbody 2 = +0.1 K
         cam_c = {1: 35.0 - 0.3, 2: 20.0 - 0.1}
         rows = {k: [] for k in ("event", "blackbody", "band", "time_s", "file", "page")}
         for ev in range(2):
@@ -59,9 +59,11 @@ def test_offset_and_gain_per_event(tmp_path):
         assert c["bb1_camera_c"] == pytest.approx(34.7, abs=0.006)
         assert c["bb2_camera_c"] == pytest.approx(19.9, abs=0.006)
         assert c["gain"] == pytest.approx(15.0 / 14.8, abs=1e-3)
-        # the fitted map sends the camera's readings onto the log
-        t_cam2 = c["bb2_camera_c"] + 273.15
-        assert c["gain"] * t_cam2 + c["offset_k"] == pytest.approx(293.15, abs=0.01)
+        assert c["offset_k"] == pytest.approx(0.1, abs=0.006)
+        # the fitted map sends the camera's readings of both blackbodies onto the log
+        for cam, log in ((c["bb1_camera_c"], 35.0), (c["bb2_camera_c"], 20.0)):
+            mapped = c["bb2_camera_c"] + c["offset_k"] + c["gain"] * (cam - c["bb2_camera_c"])
+            assert mapped == pytest.approx(log, abs=0.01)
 
 
 def test_nothing_to_check_without_blackbodies(tmp_path):
