@@ -6,8 +6,10 @@ import math
 from pathlib import Path
 
 import numpy as np
+import pandas as pd
 
 from clearfast_gis import __version__
+from clearfast_gis.export.mine_action import mine_indications
 from clearfast_gis.solar import mean_solar_hour
 from clearfast_gis.timeutil import format_utc
 
@@ -174,16 +176,20 @@ def write_anomaly_products(products: Path, ctx, survey, anomalies, records: list
     # report
     lon = float(survey.manifest["site"]["longitude_deg"])
     day, night = _pick_day_night(times_s, lon)
-    colours = {"at_mine": "#e31a1c", "ap_mine": "#e31a1c", "unknown": "#ff7f00",
-               "clutter": "#969696"}
+    # the overview draws the suspects (not the set-aside candidates) and labels only the mine
+    # indications, as the planner's map does, so that labels never bury the map
+    shown = [(rec, geom) for rec, geom in zip(records, outline_geoms, strict=True)
+             if rec.get("set_aside_reason") is None and geom is not None and not geom.is_empty]
+    indication = mine_indications(pd.DataFrame(
+        {"p_mine": [rec.get("p_mine") for rec, _ in shown],
+         "class_cue": [rec["class_cue"] for rec, _ in shown]}, dtype=object).infer_objects())
     outline_xy, labels_txt, cols = [], [], []
-    for rec, geom in zip(records, outline_geoms, strict=True):
-        if geom is None or geom.is_empty:
-            continue
+    for (rec, geom), is_mine in zip(shown, indication, strict=True):
         g = max(getattr(geom, "geoms", [geom]), key=lambda p: p.area)
         outline_xy.append(np.asarray(g.exterior.coords))
-        labels_txt.append(rec["anomaly_id"].rsplit("-", 1)[-1])
-        cols.append(colours.get(rec["class_cue"], "#ff7f00"))
+        labels_txt.append(rec["anomaly_id"].rsplit("-", 1)[-1] if is_mine else "")
+        cols.append("#e31a1c" if is_mine else
+                    "#969696" if rec["class_cue"] == "clutter" else "#ff7f00")
     overview = mosaic_panel_png([stack[day, 0], stack[night, 0]],
                                 [times_s[day], times_s[night]], transform, outline_xy,
                                 labels_txt, cols, epsg)
