@@ -126,6 +126,7 @@ def main() -> None:
           "| shows to | sun (clear-sky index), rain | low-contrast warning | simulate s "
           "| process s |")
     print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
+    totals: dict[str, list[dict]] = {}
     for name in names:
         doc = {"format": "clearfast-scenario", "format_version": 1, "preset": args.preset,
                **CONDITIONS[name]}
@@ -143,22 +144,50 @@ def main() -> None:
             process_survey(survey, products, ProcessOptions(), from_stage="detection")
             t_proc = time.perf_counter() - t0
             r = score(survey, products)
-            s, day = r["score"], r["day"] or {}
-            c = dict(zip(day.get("depths_m", []), day.get("peak_contrast_k", []), strict=True))
-            deep = day.get("deepest_showing_m")
-            csi = day.get("clear_sky_index")
-            print(f"| {name} | {seed} | {s.n_detected}/{s.n_mines} = "
-                  f"{s.detection_probability:.2f} | {s.false_alarms_per_m2:.3f} | "
-                  f"{100 * np.sqrt(np.mean(np.square(s.centre_errors_m))) if s.centre_errors_m else float('nan'):.1f} | "  # noqa: E501
-                  f"{_mean_cm(r['mae_shallow'])} | {_mean_cm(r['mae_all'])} | "
-                  f"{r['honest'][0]}/{r['honest'][1]} | "
-                  f"{c.get(0.01, float('nan')):.2f} / {c.get(0.05, float('nan')):.2f}, "
-                  f"{day.get('noise_k', float('nan')):.2f} | "
-                  f"{'-' if deep is None else f'{100 * deep:.0f} cm'} | "
-                  f"{'-' if csi is None else f'{csi:.2f}'}, {day.get('rain_mm', 0):.1f} mm | "
-                  f"{'yes' if r['warned'] else 'no'} | {t_sim:.0f} | {t_proc:.0f} |",
-                  flush=True)
+            totals.setdefault(name, []).append(r)
+            print(_row(name, str(seed), [r]) + f" {t_sim:.0f} | {t_proc:.0f} |", flush=True)
+    if len(args.seeds) > 1:
+        print(f"\nOver seeds {' '.join(map(str, args.seeds))} (day: mean over the seeds)\n")
+        print("| condition | seeds | Pd (<= 5 cm) | FA/m2 | centre RMS cm "
+              "| depth MAE cm 0-4 cm (n) | depth MAE cm all (n) | honest statuses "
+              "| day: AP mine at 1 / 5 cm, noise (K) | shows to | sun (clear-sky index), rain "
+              "| low-contrast warning |")
+        print("|---|---|---|---|---|---|---|---|---|---|---|---|")
+        for name, rs in totals.items():
+            print(_row(name, str(len(rs)), rs))
 
+
+def _row(name: str, seeds: str, rs: list[dict]) -> str:
+    """One markdown row (without the timings) over one or several surveys' scores."""
+    det = sum(r["score"].n_detected for r in rs)
+    n = sum(r["score"].n_mines for r in rs)
+    fa = sum(r["score"].n_false_alarms for r in rs)
+    area = sum(r["score"].footprint_m2 for r in rs)
+    centre = [e for r in rs for e in r["score"].centre_errors_m]
+    days = [r["day"] or {} for r in rs]
+
+    def mean_day(get) -> float:
+        v = [get(d) for d in days]
+        v = [x for x in v if x is not None and np.isfinite(x)]
+        return float(np.mean(v)) if v else float("nan")
+
+    def at(d: dict, depth: float):
+        return dict(zip(d.get("depths_m", []), d.get("peak_contrast_k", []),
+                        strict=True)).get(depth)
+
+    deep = [d.get("deepest_showing_m") for d in days]
+    deep_txt = "/".join("-" if x is None else f"{100 * x:.0f}" for x in deep) + " cm"
+    csi = mean_day(lambda d: d.get("clear_sky_index"))
+    warned = sum(r["warned"] for r in rs)
+    return (f"| {name} | {seeds} | {det}/{n} = {det / max(n, 1):.2f} | {fa / area:.3f} | "
+            f"{100 * np.sqrt(np.mean(np.square(centre))) if centre else float('nan'):.1f} | "
+            f"{_mean_cm([e for r in rs for e in r['mae_shallow']])} | "
+            f"{_mean_cm([e for r in rs for e in r['mae_all']])} | "
+            f"{sum(r['honest'][0] for r in rs)}/{sum(r['honest'][1] for r in rs)} | "
+            f"{mean_day(lambda d: at(d, 0.01)):.2f} / {mean_day(lambda d: at(d, 0.05)):.2f}, "
+            f"{mean_day(lambda d: d.get('noise_k')):.2f} | {deep_txt} | "
+            f"{csi:.2f}, {mean_day(lambda d: d.get('rain_mm', 0)):.1f} mm | "
+            f"{warned}/{len(rs)} |")
 
 if __name__ == "__main__":
     main()

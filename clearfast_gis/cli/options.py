@@ -99,6 +99,10 @@ def detection_options(f):
     f = click.option("--epsilon", type=click.FloatRange(0.0, 0.5, min_open=True),
                      default=DEFAULTS.epsilon, show_default=True,
                      help="Histogram stretching percentile fraction.")(f)
+    f = click.option("--threshold-snr", type=click.FloatRange(min=0.0, min_open=True),
+                     default=DEFAULTS.threshold_snr, show_default=True,
+                     help="Cap of the stretch's cut at this many times each image's clutter "
+                     "(1-sigma, K).")(f)
     f = click.option("--level", type=click.IntRange(min=1), default=DEFAULTS.level,
                      help="Majority-voting level l, images (default: "
                      f"{_fraction(DEFAULTS.level_fraction)} of the images covering each "
@@ -121,7 +125,7 @@ def build_options(params: dict, invert: bool = True):
         raise click.UsageError("D2 must be smaller than D1")
     kw = {k: v for k, v in params.items()
           if k in ("pixel_size_m", "seam_balance", "reference_scan", "d1_m", "d2_m", "epsilon",
-                   "level", "gamma", "max_anomalies", "kernels") and v is not None}
+                   "threshold_snr", "level", "gamma", "max_anomalies", "kernels") and v is not None}
     if params.get("no_coregister"):
         kw["coregister"] = False
     if params.get("no_atmosphere"):

@@ -9,13 +9,47 @@ from scipy import ndimage
 #: ring).
 CLUTTER_SCALE_M = 0.3
 
+#: The detector's default cut in clutter sigmas (``ProcessOptions.threshold_snr``): the
+#: stretch's cut of each filtered image is capped at this many times the image's clutter.
+THRESHOLD_SNR = 4.0
+
+
+def image_clutter_k(image: np.ndarray, pixel_size_m: float, keep: np.ndarray | None = None,
+                    scale_m: float = CLUTTER_SCALE_M) -> float:
+    """Robust 1-sigma of the local contrast of one image, K.
+
+    The image minus its mean over a ``scale_m`` square window (no-data filled with the
+    image's median); the spread is 1.4826 times the median absolute deviation over the cells
+    with data (and ``keep``): objects, a few per cent of the cells, do not move it.
+
+    Parameters
+    ----------
+    image : ndarray, shape (H, W)
+        Apparent temperature, K or degrees C; NaN = no data.
+    pixel_size_m : float
+        Cell size, m.
+    keep : ndarray of bool, shape (H, W), optional
+        Cells to measure (default: all with data).
+
+    Returns
+    -------
+    float
+        NaN when no cell is measured.
+    """
+    img = np.asarray(image, dtype=np.float64)
+    ok = np.isfinite(img) if keep is None else np.isfinite(img) & keep
+    if not ok.any():
+        return float("nan")
+    size = max(3, int(round(scale_m / pixel_size_m)) | 1)
+    filled = np.where(np.isfinite(img), img, np.median(img[np.isfinite(img)]))
+    v = (filled - ndimage.uniform_filter(filled, size=size, mode="nearest"))[ok]
+    return float(1.4826 * np.median(np.abs(v - np.median(v))))
+
 
 def background_clutter_k(stack: np.ndarray, labels: np.ndarray, pixel_size_m: float,
                          scale_m: float = CLUTTER_SCALE_M) -> float:
-    """Robust 1-sigma of the local contrast of mine-free background cells, K.
-
-    Each scan's image minus its median over a ``scale_m`` window, over the cells outside every
-    anomaly; the spread is 1.4826 times the median absolute deviation; the median over scans.
+    """Robust 1-sigma of the local contrast of mine-free background cells, K: the median
+    over scans of :func:`image_clutter_k` over the cells outside every anomaly.
 
     Parameters
     ----------
@@ -31,15 +65,7 @@ def background_clutter_k(stack: np.ndarray, labels: np.ndarray, pixel_size_m: fl
     float
         NaN when no scan has background cells.
     """
-    size = max(3, int(round(scale_m / pixel_size_m)) | 1)
-    spreads = []
-    for img in np.asarray(stack, dtype=np.float64):
-        ok = np.isfinite(img)
-        if not ok.any():
-            continue
-        filled = np.where(ok, img, np.median(img[ok]))
-        local = filled - ndimage.median_filter(filled, size=size)
-        v = local[ok & (labels == 0)]
-        if v.size:
-            spreads.append(1.4826 * np.median(np.abs(v - np.median(v))))
+    spreads = [image_clutter_k(img, pixel_size_m, labels == 0, scale_m)
+               for img in np.asarray(stack, dtype=np.float64)]
+    spreads = [s for s in spreads if np.isfinite(s)]
     return float(np.median(spreads)) if spreads else float("nan")

@@ -3,7 +3,8 @@
 For every image f_i of the stack (scan i, band b):
 
 1. top-hat  ``t_i = f_i - r_B(f_i o D1 | f_i)`` (hot) and bottom-hat (cold, the dual);
-2. ``G_i = T(F_m(t_i, I1, I2), 0.5)`` with I1, I2 at the epsilon percentiles;
+2. ``G_i = T(F_m(t_i, I1, I2), 0.5)`` with I1, I2 at the epsilon percentiles (optionally
+   with the cut capped at a multiple of the image's noise, ``ceiling``);
 3. ``O_i = R_B(G_i o D2 | G_i)``;
 4. majority vote ``M = T(sum_i O_i, l)``, i.e. pixels where ``sum_i O_i >= l``;
 5. ``L_i = R_B(M | G_i)``;
@@ -106,6 +107,7 @@ def detect_anomalies(
     gamma: float | np.ndarray | None = None,
     polarity: str = "both",
     progress: Progress = NULL_PROGRESS,
+    ceiling: float | np.ndarray | None = None,
 ) -> DetectionResult:
     """Detect hot and cold anomalies on a temporal (multi-band) stack.
 
@@ -131,6 +133,11 @@ def detect_anomalies(
         Which anomalies to look for.
     progress : Progress
         Reports one step per image.
+    ceiling : float or ndarray (N*B,), optional
+        Highest cut of step 2 per image, in the stack's units (K): a pixel of the hat image
+        is set above ``min(stretch cut, ceiling)``
+        (:func:`clearfast_gis.detection.stretch.stretch_threshold`); None: the paper's
+        stretch alone.
 
     Returns
     -------
@@ -142,6 +149,8 @@ def detect_anomalies(
         raise ValueError(f"need D1 > D2 >= 1 pixel, got D1={d1_px}, D2={d2_px}")
     images, n, b = as_image_stack(stack)
     k = n * b
+    ceilings = np.broadcast_to(np.full(1, np.nan) if ceiling is None
+                               else np.asarray(ceiling, dtype=np.float64), (k,))
     level = k / 2.0 if level is None else (
         np.asarray(level, dtype=np.float64) if np.ndim(level) else float(level))
     shape = images.shape[1:]
@@ -159,7 +168,8 @@ def detect_anomalies(
         for p, hat in (("hot", top_hat_by_reconstruction),
                        ("cold", bottom_hat_by_reconstruction)):
             if want[p]:
-                g[p][i] = stretch_threshold(hat(images[i], d1_px), epsilon)
+                g[p][i] = stretch_threshold(hat(images[i], d1_px), epsilon,
+                                            ceiling=float(ceilings[i]))
                 o[p] = binary_opening_by_reconstruction(g[p][i], d2_px)
         progress.advance()
         return o

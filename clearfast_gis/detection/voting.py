@@ -8,6 +8,7 @@ import dataclasses
 import numpy as np
 
 from clearfast_gis.detection import blob_features, detect_anomalies
+from clearfast_gis.detection.clutter import image_clutter_k
 from clearfast_gis.detection.compact import split_oversized
 from clearfast_gis.detection.detector import as_image_stack
 from clearfast_gis.progress import NULL_PROGRESS, Progress
@@ -100,7 +101,8 @@ def detect_on_mosaics(stack_c: np.ndarray, times_s: np.ndarray, transform, pixel
                       longitude_deg: float, d1_m: float, d2_m: float, epsilon: float,
                       level: int | None, gamma: float | None, max_anomalies: int,
                       level_fraction: float = 0.5, gamma_fraction: float | None = None,
-                      progress: Progress = NULL_PROGRESS) -> tuple[np.ndarray, list]:
+                      progress: Progress = NULL_PROGRESS,
+                      threshold_snr: float | None = None) -> tuple[np.ndarray, list]:
     """The morphological detector on mosaics, and blob features.
 
     Parameters
@@ -126,6 +128,12 @@ def detect_on_mosaics(stack_c: np.ndarray, times_s: np.ndarray, transform, pixel
         (None: OR).
     max_anomalies : int
         Keep the highest-scoring ones.
+    threshold_snr : float or None
+        Cap of each image's stretch cut at this many times its clutter
+        (:func:`clearfast_gis.detection.clutter.image_clutter_k`); None: the stretch alone.
+        The stretch cut is half the top percentile of the hat image: on a day whose mines
+        give a few tenths of a kelvin among markers and vegetation of several kelvins it lies
+        above a mine that stands 5-8 sigma above the clutter.
 
     Returns
     -------
@@ -140,8 +148,11 @@ def detect_on_mosaics(stack_c: np.ndarray, times_s: np.ndarray, transform, pixel
             level = coverage_level(level_fraction, covered, n_scans, n_bands)
         if gamma is None and gamma_fraction is not None:
             gamma = coverage_level(gamma_fraction, covered, n_scans, n_bands)
+    ceiling = None if threshold_snr is None else np.array(
+        [threshold_snr * image_clutter_k(img, pixel_size_m) for img in images])
     det = detect_anomalies(stack_c, disk_px(d1_m, pixel_size_m), disk_px(d2_m, pixel_size_m),
-                           epsilon=epsilon, level=level, gamma=gamma, progress=progress)
+                           epsilon=epsilon, level=level, gamma=gamma, progress=progress,
+                           ceiling=ceiling)
     split = split_by_cores(det.labels, det.votes, level)
     split = split_oversized(split, images, disk_px(d1_m, pixel_size_m),
                             disk_px(d2_m, pixel_size_m), d1_m / pixel_size_m)

@@ -25,7 +25,13 @@ from clearfast_gis.pipeline.scanjob import scan_part
 from clearfast_gis.pipeline.stages import Characterisation, Detection, RunContext
 from clearfast_gis.pipeline.state import StageState, mosaic_rel
 from clearfast_gis.thermal import Inversion
-from clearfast_gis.thermal.daycontrast import DayContrast, contrast_noise_k, day_contrast
+from clearfast_gis.thermal.daycontrast import (
+    PEAK_LIFT_SIGMA,
+    SHOW_SNR,
+    DayContrast,
+    contrast_noise_k,
+    day_contrast,
+)
 from clearfast_gis.thermal.sitesoil import characterise, site_soil
 
 
@@ -104,7 +110,8 @@ def detect(c: RunContext) -> Detection:
     labels, feats = detect_on_mosaics(stack, times, first.transform, read.grid.pixel_size, lon,
                                       o.d1_m, o.d2_m, o.epsilon, o.level, o.gamma,
                                       o.max_anomalies, level_fraction=o.level_fraction,
-                                      gamma_fraction=o.gamma_fraction, progress=c.progress)
+                                      gamma_fraction=o.gamma_fraction, progress=c.progress,
+                                      threshold_snr=o.threshold_snr)
     ids, xy = list(read.marker_ids), read.marker_xy
     feats, _ = split_markers(feats, ids, xy)
     matches = markers_in_mosaics(stack, read.grid, ids, xy)
@@ -133,8 +140,11 @@ def characterise_suspects(c: RunContext) -> Characterisation:
     site = ctx.survey.manifest["site"]
     noise = contrast_noise_k(inversions, ctx.survey, background_clutter_k(
         det.stack[:, 0], det.labels, c[stages.READ].grid.pixel_size))
+    o = c.options
     day = day_contrast(forcing, soil, det.times_s, noise, float(site["latitude_deg"]),
-                       float(site["longitude_deg"]))
+                       float(site["longitude_deg"]),
+                       show_snr=(o.threshold_snr - PEAK_LIFT_SIGMA) if o.threshold_snr
+                       else SHOW_SNR, show_share=o.level_fraction)
     return Characterisation(inversions, alpha, sigma, day=day)
 
 

@@ -6,6 +6,8 @@ import hashlib
 import json
 from dataclasses import asdict, dataclass, fields
 
+from clearfast_gis.detection.clutter import THRESHOLD_SNR
+
 MOSAIC_PARAMETERS = ("pixel_size_m", "coregister", "search_m", "attitude_samples",
                      "adjust_attitude", "frame_refine", "max_shift_m", "max_angle_deg",
                      "seam_balance", "reference_scan", "atmosphere", "kernels")
@@ -57,6 +59,12 @@ class ProcessOptions:
         removes smaller clutter (paper §4), metres.
     epsilon : float
         Histogram stretching percentile fraction (paper §4.2).
+    threshold_snr : float or None
+        The stretch's cut of each image is capped at this many times the image's clutter
+        (1-sigma local contrast at 0.3 m): where markers, vegetation or surface-laid mines of
+        several kelvins set the top percentile, the paper's cut (half of it) lies above a
+        buried mine's few tenths of a kelvin (clay, loam, after rain, the tropics and the
+        southern seasons in ``benchmarks/conditions.py``). None: the stretch alone.
     level : int or None
         Majority-voting level l (paper §4.4); None: ``level_fraction`` of the images.
     level_fraction : float
@@ -93,6 +101,7 @@ class ProcessOptions:
     d1_m: float = 0.5
     d2_m: float = 0.06
     epsilon: float = 0.01
+    threshold_snr: float | None = THRESHOLD_SNR
     level: int | None = None
     level_fraction: float = 0.25
     gamma: float | None = None

@@ -220,7 +220,7 @@ def write_anomaly_products(products: Path, ctx, survey, anomalies, records: list
     warnings.extend(anomalies.notes)
     day_fact = day_contrast_text(anomalies.day)
     if anomalies.day is not None and weak_day(anomalies.day):
-        warnings.append(f"low thermal contrast: {day_fact}")
+        warnings.append(f"low thermal contrast: {weak_day_text(anomalies.day)}; {day_fact}")
     facts = [
         ("frames", str(len(survey.frames))), ("scans", str(stack.shape[0])),
         ("positions per scan", str(len(survey.positions))),
@@ -259,8 +259,23 @@ def write_anomaly_products(products: Path, ctx, survey, anomalies, records: list
 
 
 def weak_day(day) -> bool:
-    """True when a mine 5 cm deep would not show on the day (contrast < 3 noise sigmas)."""
-    return not (day.deepest_showing_m >= 0.05)
+    """True when a mine 5 cm deep would not show on the day (its delivered contrast below the
+    detector's cut in too many scans)."""
+    return not (day.deepest_showing_m >= WEAK_DAY_DEPTH_M - 1e-9)
+
+
+#: A day is dull when a 10 cm AP mine this deep would not show, m (the depth down to which
+#: the project states its accuracy).
+WEAK_DAY_DEPTH_M = 0.05
+
+
+def weak_day_text(day) -> str:
+    """What a dull day means for the map: the depth below which mines can be missed."""
+    deep = day.deepest_showing_m
+    if not math.isfinite(deep):
+        return "even a mine at 1 cm may not show: an empty map here does not mean no mines"
+    return (f"mines deeper than about {100 * deep:.0f} cm may not show: below that an empty "
+            "map does not mean no mines")
 
 
 def day_contrast_text(day) -> str:
@@ -274,8 +289,10 @@ def day_contrast_text(day) -> str:
     sky = ("" if not math.isfinite(day.clear_sky_index)
            else f"; sun {100 * day.clear_sky_index:.0f} % of a clear sky")
     rain = f"; rain {day.rain_mm:.1f} mm" if day.rain_mm > 0 else ""
-    return (f"peak {peaks} against a noise of {day.noise_k:.2f} K: {shows} "
-            f"(3 noise sigmas in a quarter of the scans){sky}{rain}")
+    return (f"modelled peak {peaks}, of which the mosaics keep about "
+            f"{100 * day.delivered_fraction:.0f} %, against a noise of {day.noise_k:.2f} K: "
+            f"{shows} ({day.show_snr:g} noise sigmas in {100 * day.show_share:.0f} % of the "
+            f"scans, the detector's cut){sky}{rain}")
 
 
 def base_manifest(survey, epsg: int, options, scan_records: dict[int, dict], fixq: dict

@@ -313,8 +313,8 @@ STAGES: tuple[Stage, ...] = (
     Stage(MOSAICS, _MOSAIC_OPTIONS, ("mosaics/",), _mosaics),
     Stage(ADJUSTMENT, (), ("mosaics/",), _adjustment),
     Stage(FOOTPRINT, (), ("footprint.geojson",), _footprint),
-    Stage(DETECTION, ("d1_m", "d2_m", "epsilon", "level", "level_fraction", "gamma",
-                      "gamma_fraction", "max_anomalies"), (), _detection),
+    Stage(DETECTION, ("d1_m", "d2_m", "epsilon", "threshold_snr", "level", "level_fraction",
+                      "gamma", "gamma_fraction", "max_anomalies"), (), _detection),
     Stage(CHARACTERISATION, ("invert",), (), _characterisation),
     Stage(PRODUCTS, (), ("anomalies.gpkg", "report.html", "figures/"), _products),
 )

@@ -164,3 +164,48 @@ def test_summary_polarity_rules():
     assert summary_polarity(np.ones(12), times, 0.0) == "warm"
     assert summary_polarity(-np.ones(12), times, 0.0) == "cool"
     assert summary_polarity(np.zeros(12)) == "none"
+
+
+def _weak_mine_among_strong_objects(seed: int) -> tuple[np.ndarray, tuple[int, int]]:
+    """Six images, 2 cm cells: 0.04 K clutter, four 40 cm 'markers' at +6 K (2.6 % of the
+    cells: they fill the top percentile) and a 10 cm disc at +0.3 K (7.5 sigma), the weak
+    mine."""
+    rng = np.random.default_rng(seed)
+    yy, xx = np.mgrid[0:200, 0:240]
+    strong = np.zeros(yy.shape, bool)
+    for y0, x0 in ((50, 50), (150, 190), (50, 190), (150, 50)):
+        strong |= (yy - y0) ** 2 + (xx - x0) ** 2 <= 10 ** 2
+    weak = (yy - 100) ** 2 + (xx - 120) ** 2 <= 2.6 ** 2
+    clutter = ndimage.gaussian_filter(rng.standard_normal((6, 200, 240)), (0, 1, 1))
+    clutter *= 0.04 / clutter.std()
+    stack = (20.0 + clutter + 6.0 * strong + 0.3 * weak).astype(np.float32)
+    return stack, (100, 120)
+
+
+def test_ceiling_caps_the_stretch_cut():
+    img = np.zeros((50, 50), np.float32)
+    img[:10, :10] = 6.0  # 4 % of the cells far above the rest: the cut is 3 K
+    img[20:23, 20:23] = 0.5
+    plain = stretch_threshold(img, 0.01)
+    capped = stretch_threshold(img, 0.01, ceiling=0.2)
+    assert not plain[21, 21] and capped[21, 21]
+    assert plain[:10, :10].all() and capped[:10, :10].all() and capped.sum() == 100 + 9
+    # a ceiling above the stretch's own cut changes nothing
+    assert np.array_equal(stretch_threshold(img, 0.01, ceiling=100.0), plain)
+
+
+def test_weak_mine_among_strong_objects_needs_the_noise_cut():
+    """The stretch's cut (half the top percentile, set by the strong objects) lies above a
+    0.3 K mine that stands 7 sigma above the clutter: capped at 4 sigma it is voted for."""
+    from clearfast_gis.detection.clutter import image_clutter_k
+
+    stack, (r, c) = _weak_mine_among_strong_objects(0)
+    plain = detect_anomalies(stack, 25, 3, level=2)
+    assert plain.labels[r, c] == 0
+    sigma = np.array([image_clutter_k(img, 0.02) for img in stack])
+    assert sigma == pytest.approx(0.04, rel=0.25)
+    capped = detect_anomalies(stack, 25, 3, level=2, ceiling=4.0 * sigma)
+    assert capped.labels[r, c] > 0 and capped.votes[r, c] >= 5
+    # the strong objects stay found, and texture does not gather the votes of a mine
+    assert capped.labels[50, 50] > 0 and capped.labels[150, 190] > 0
+    assert capped.n_anomalies <= 6
