@@ -118,6 +118,10 @@ def render_html(data: ReportData) -> str:
         why = str(r.get("set_aside_reason", "")).split(",")[0].split(" ", 1)[0]
         aside[why] = aside.get(why, 0) + 1
     aside_txt = ", ".join(f"{n} {k}" for k, n in sorted(aside.items())) or "none"
+    # a dull day is said where the map is read, not only among the warnings at the bottom
+    dull = "".join(f"<p class='note'><b>Low thermal contrast.</b> "
+                   f"{esc(w.removeprefix('low thermal contrast: '))}</p>"
+                   for w in data.warnings if w.startswith("low thermal contrast"))
     curve_img = ("<img src='figures/operating_curve.png' alt='operating curve'>"
                  if data.operating_png else "")
     return f"""<!DOCTYPE html>
@@ -139,6 +143,7 @@ never a confirmed hazard: {len(data.suspects)} suspects ({n_mine} cued as mines;
 {expected:.1f} mines expected from their p_mine), ranked by mine likelihood.
 {len(data.candidates)} further detections cannot be mines and are set aside in the
 <code>candidates</code> layer (by blob, footprint or scans: {esc(aside_txt)}).</p>
+{dull}
 <h2>Mosaics and detections</h2>
 <img src="figures/overview.png" alt="mosaics and detections" style="max-width:100%">
 <h2>Operating curve</h2>

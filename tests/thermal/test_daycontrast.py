@@ -76,3 +76,24 @@ def test_contrast_noise_falls_back_to_the_camera():
 
     assert contrast_noise_k({}, Survey()) == 0.08
     assert contrast_noise_k({}) == 0.05
+
+
+def test_dull_day_is_said_at_the_top_of_the_report(forcing, scans):
+    """Under a full overcast a 5 cm mine gives less than the detector's cut: the day is
+    called dull, the warning names the depth, and the report says it above the map."""
+    from clearfast_gis.pipeline.products import weak_day, weak_day_text
+    from clearfast_gis.report.html import ReportData, render_html
+
+    soil, noise = get_soil("moist_sand"), 0.07  # clutter of a textured site, K
+    clear = day_contrast(forcing, soil, scans, noise, LAT_DEG, LON_DEG)
+    dull = day_contrast(_overcast(forcing), soil, scans, noise, LAT_DEG, LON_DEG)
+    assert not weak_day(clear) and weak_day(dull)
+    # the detector's cut: 0.7 of the modelled contrast against 3 sigma (4 less the peak lift)
+    assert dull.delivered_fraction * dull.contrast_at(0.05) < 3 * noise
+    text = weak_day_text(dull)
+    assert f"deeper than about {100 * dull.deepest_showing_m:.0f} cm" in text
+    html = render_html(ReportData("S1", "site", 32636, 0.0, 3600.0, [], b"",
+                                  warnings=[f"low thermal contrast: {text}"]))
+    assert html.index("Low thermal contrast.") < html.index("Mosaics and detections")
+    plain = render_html(ReportData("S1", "site", 32636, 0.0, 3600.0, [], b""))
+    assert "Low thermal contrast." not in plain
