@@ -119,9 +119,10 @@ def render_html(data: ReportData) -> str:
         aside[why] = aside.get(why, 0) + 1
     aside_txt = ", ".join(f"{n} {k}" for k, n in sorted(aside.items())) or "none"
     # a dull day is said where the map is read, not only among the warnings at the bottom
-    dull = "".join(f"<p class='note'><b>Low thermal contrast.</b> "
-                   f"{esc(w.removeprefix('low thermal contrast: '))}</p>"
-                   for w in data.warnings if w.startswith("low thermal contrast"))
+    said = [w.removeprefix("low thermal contrast: ") for w in data.warnings
+            if w.startswith("low thermal contrast")]
+    dull = "".join(f"<p class='note'><b>Low thermal contrast.</b> {esc(t[:1].upper() + t[1:])}"
+                   "</p>" for t in said)
     curve_img = ("<img src='figures/operating_curve.png' alt='operating curve'>"
                  if data.operating_png else "")
     return f"""<!DOCTYPE html>
