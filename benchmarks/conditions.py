@@ -37,6 +37,7 @@ from pathlib import Path
 import numpy as np
 
 from clearfast_gis.evaluation import mine_statuses, score_against_truth
+from clearfast_gis.evaluation.ranked import score_ranked
 from clearfast_gis.pipeline import ProcessOptions, process_survey
 from clearfast_gis.simulate import parse_scenario, preset, simulate_survey
 
@@ -92,13 +93,20 @@ CONDITIONS: dict[str, dict] = {
 }
 
 
+#: The goal's false-alarm rate: Pd is also read down the ranked list (p_mine) up to it.
+MAX_FA_PER_M2 = 0.01
+
+
 def score(survey: Path, products: Path) -> dict:
     """Pd, FA/m2, centre RMS, depth MAE of confident depths (0-4 cm and all), honest share."""
     s = score_against_truth(survey, products)
     statuses = mine_statuses(survey, products)
     conf = [m for m in statuses if m.confident]
     manifest = json.loads((products / "products.json").read_text())
+    ranked = score_ranked(survey, products)
     return {"score": s, "honest": (sum(m.honest for m in statuses), len(statuses)),
+            "pd_ranked": (ranked.pd_at(MAX_FA_PER_M2) * ranked.n_scored_mines,
+                          ranked.n_scored_mines),
             "mae_shallow": [abs(m.depth_m - m.true_depth_m) for m in conf
                             if m.true_depth_m <= 0.04],
             "mae_all": [abs(m.depth_m - m.true_depth_m) for m in conf],
@@ -116,16 +124,19 @@ def main() -> None:
     ap.add_argument("--seeds", type=int, nargs="+", default=[0, 1])
     ap.add_argument("--only", nargs="*", help="conditions whose name starts with these")
     ap.add_argument("--work", default="/tmp/clearfast-conditions")
+    ap.add_argument("--score-only", action="store_true",
+                    help="score the products already in --work (no simulation, no processing)")
     args = ap.parse_args()
     work = Path(args.work)
     work.mkdir(parents=True, exist_ok=True)
     names = [n for n in CONDITIONS
              if not args.only or any(n.startswith(o) for o in args.only)]
-    print("| condition | seed | Pd (<= 5 cm) | FA/m2 | centre RMS cm | depth MAE cm 0-4 cm (n) "
+    print("| condition | seed | Pd (<= 5 cm) | FA/m2 | Pd at 0.01 FA/m2 (ranked) "
+          "| centre RMS cm | depth MAE cm 0-4 cm (n) "
           "| depth MAE cm all (n) | honest statuses | day: AP mine at 1 / 5 cm, noise (K) "
           "| shows to | sun (clear-sky index), rain | low-contrast warning | simulate s "
           "| process s |")
-    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
     totals: dict[str, list[dict]] = {}
     for name in names:
         doc = {"format": "clearfast-scenario", "format_version": 1, "preset": args.preset,
@@ -137,22 +148,26 @@ def main() -> None:
             cfg = parse_scenario(doc, None, preset(args.preset)).config
             survey, products = base / "survey", base / "products"
             t0 = time.perf_counter()
+            if args.score_only and not (products / "report.html").exists():
+                continue
             if not (survey / "survey.json").exists():
                 simulate_survey(survey, cfg, seed=seed)
             t_sim = time.perf_counter() - t0
             t0 = time.perf_counter()
-            process_survey(survey, products, ProcessOptions(), from_stage="detection")
+            if not args.score_only:
+                process_survey(survey, products, ProcessOptions(), from_stage="detection")
             t_proc = time.perf_counter() - t0
             r = score(survey, products)
             totals.setdefault(name, []).append(r)
             print(_row(name, str(seed), [r]) + f" {t_sim:.0f} | {t_proc:.0f} |", flush=True)
-    if len(args.seeds) > 1:
+    if len(args.seeds) > 1 or args.score_only:
         print(f"\nOver seeds {' '.join(map(str, args.seeds))} (day: mean over the seeds)\n")
-        print("| condition | seeds | Pd (<= 5 cm) | FA/m2 | centre RMS cm "
+        print("| condition | seeds | Pd (<= 5 cm) | FA/m2 | Pd at 0.01 FA/m2 (ranked) "
+              "| centre RMS cm "
               "| depth MAE cm 0-4 cm (n) | depth MAE cm all (n) | honest statuses "
               "| day: AP mine at 1 / 5 cm, noise (K) | shows to | sun (clear-sky index), rain "
               "| low-contrast warning |")
-        print("|---|---|---|---|---|---|---|---|---|---|---|---|")
+        print("|---|---|---|---|---|---|---|---|---|---|---|---|---|")
         for name, rs in totals.items():
             print(_row(name, str(len(rs)), rs))
 
@@ -179,7 +194,10 @@ def _row(name: str, seeds: str, rs: list[dict]) -> str:
     deep_txt = "/".join("-" if x is None else f"{100 * x:.0f}" for x in deep) + " cm"
     csi = mean_day(lambda d: d.get("clear_sky_index"))
     warned = sum(r["warned"] for r in rs)
+    found = sum(r["pd_ranked"][0] for r in rs)
+    scored = sum(r["pd_ranked"][1] for r in rs)
     return (f"| {name} | {seeds} | {det}/{n} = {det / max(n, 1):.2f} | {fa / area:.3f} | "
+            f"{found:.0f}/{scored} = {found / max(scored, 1):.2f} | "
             f"{100 * np.sqrt(np.mean(np.square(centre))) if centre else float('nan'):.1f} | "
             f"{_mean_cm([e for r in rs for e in r['mae_shallow']])} | "
             f"{_mean_cm([e for r in rs for e in r['mae_all']])} | "
