@@ -17,10 +17,10 @@ from clearfast_gis.detection.markers import MarkerMatch, markers_in_mosaics, spl
 from clearfast_gis.detection.voting import detect_on_mosaics
 from clearfast_gis.export.cog import read_mosaic
 from clearfast_gis.export.manifest import read_products_manifest
+from clearfast_gis.export.products import write_anomaly_products
 from clearfast_gis.export.records import suspect_records
 from clearfast_gis.parallel import thread_map
 from clearfast_gis.pipeline import stages
-from clearfast_gis.pipeline.products import write_anomaly_products
 from clearfast_gis.pipeline.scanjob import scan_part
 from clearfast_gis.pipeline.stages import Characterisation, Detection, RunContext
 from clearfast_gis.pipeline.state import StageState, mosaic_rel

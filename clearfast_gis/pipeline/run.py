@@ -13,9 +13,9 @@ from clearfast_gis.export.manifest import read_products_manifest, write_products
 from clearfast_gis.parallel import serial_kernels
 from clearfast_gis.pipeline import stages
 from clearfast_gis.pipeline.options import MOSAIC_PARAMETERS, ProcessOptions
-from clearfast_gis.pipeline.resources import StageMeter, cpu_seconds
 from clearfast_gis.pipeline.stages import STAGES, RunContext, stage_index
 from clearfast_gis.progress import NULL_PROGRESS, Progress
+from clearfast_gis.resources import StageMeter, cpu_seconds
 
 
 def process_survey(survey_path: str | Path, products: str | Path,
@@ -87,8 +87,8 @@ def _run(c: RunContext, first: int | None, last: int) -> dict:
     if stages.PRODUCTS in c.records:
         manifest = c[stages.PRODUCTS].manifest
     else:
+        from clearfast_gis.export.products import base_manifest
         from clearfast_gis.pipeline.inputs import fix_quality_summary
-        from clearfast_gis.pipeline.products import base_manifest
 
         manifest = base_manifest(read.ctx.survey, read.epsg, c.options,
                                  c[stages.MOSAICS].scan_records if stages.MOSAICS in c.records

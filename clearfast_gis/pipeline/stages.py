@@ -23,9 +23,9 @@ from pathlib import Path
 import numpy as np
 
 from clearfast_gis.pipeline.options import ProcessOptions
-from clearfast_gis.pipeline.resources import StageMeter
 from clearfast_gis.pipeline.state import RunState, StageState
 from clearfast_gis.progress import Progress
+from clearfast_gis.resources import StageMeter
 
 
 @dataclass
@@ -219,6 +219,7 @@ class Products:
 # -- stages --------------------------------------------------------------------------------
 
 def _read(c: RunContext) -> SurveyRead:
+    from clearfast_gis.mosaic.survey_grid import mosaic_grid_for, pixel_size, reference_scan
     from clearfast_gis.pipeline import inputs
 
     ctx, epsg, report = inputs.open_context(c.survey_path, c.progress, c.station_profile)
@@ -227,11 +228,10 @@ def _read(c: RunContext) -> SurveyRead:
     c.state = RunState(c.products, key)
     if c.fresh:
         c.state.units = {}
-    ref = inputs.reference_scan(survey, c.options)
+    ref = reference_scan(survey, c.options.reference_scan)
     ids, xy = inputs.survey_markers(report.logs.markers, epsg)
     return SurveyRead(ctx, epsg, report, ref, tuple(sorted(int(x) for x in survey.scans)),
-                      inputs.mosaic_grid_for(ctx, epsg, inputs.pixel_size(survey, c.options),
-                                             ref),
+                      mosaic_grid_for(ctx, epsg, pixel_size(survey, c.options.pixel_size_m), ref),
                       tuple(ids), xy)
 
 
@@ -267,7 +267,7 @@ def _adjustment(c: RunContext) -> AttitudeAdjustment:
 
 
 def _footprint(c: RunContext) -> Footprint:
-    from clearfast_gis.pipeline.products import write_footprint_geojson
+    from clearfast_gis.export.products import write_footprint_geojson
     from clearfast_gis.pipeline.scanjob import temporal_residuals
 
     c.job.close()
