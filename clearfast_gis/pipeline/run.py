@@ -78,7 +78,7 @@ def _run(c: RunContext, first: int | None, last: int) -> dict:
             if first is not None and k == max(first, 1):
                 for later in STAGES[k:]:
                     c.state.drop(later.name)
-            with c.meter.stage(stage.name):
+            with c.meter.stage(stage.name), c.progress.chain_stage(stage.name, stage.label):
                 c.records[stage.name] = stage.run(c)
     finally:
         if c.job is not None:
