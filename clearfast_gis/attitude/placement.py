@@ -69,3 +69,11 @@ def fit_survey_attitude(ties: list[LinearTie], order: list[int], node_times: np.
             "rms_before_m": _finite_or_none(adj.rms_before_m),
             "rms_m": _finite_or_none(adj.rms_m), "n_ties": adj.n_ties,
             "n_used": adj.n_used, "rebuild": rebuild}
+
+
+def nearest_attitude(scan: int, done: dict[int, tuple]) -> tuple:
+    """Attitude (roll, pitch, yaw degrees) of the processed scan nearest ``scan`` in
+    ``done`` (scan -> attitude), the start of its fit; zero attitude if none."""
+    if not done:
+        return (0.0, 0.0, 0.0)
+    return done[min(done, key=lambda s: abs(s - scan))]

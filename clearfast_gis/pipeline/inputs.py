@@ -1,6 +1,8 @@
-"""What the chain reads from a survey folder: the survey's CRS, the identity of the inputs,
-the surveyed markers, the GNSS fix summary (the mosaic grid, its cell size and the reference
-scan are chosen in :mod:`clearfast_gis.mosaic.survey_grid`)."""
+"""What the chain reads from a survey folder: the validated survey and its logs, the
+platform track, the calibration events, the survey's CRS, the identity of the inputs (the
+mosaic grid, its cell size and the reference scan are chosen in
+:mod:`clearfast_gis.mosaic.survey_grid`; the markers and the fix summary in
+:mod:`clearfast_gis.geometry.gnss`)."""
 
 from __future__ import annotations
 
@@ -98,27 +100,5 @@ def open_context(survey_path: str | Path, progress: Progress = NULL_PROGRESS,
 def air_function(ctx: SurveyContext):
     label = ctx.survey.label("weather")
     return lambda t: weather_at(ctx.weather, t, source=label)
-
-
-def survey_markers(markers, epsg: int) -> tuple[list[str], np.ndarray]:
-    """Surveyed markers (``Markers`` or None) in the survey CRS: ids and (M, 2) positions."""
-    from clearfast_gis.geometry.gnss import lonlat_to_crs
-
-    if markers is None:
-        return [], np.zeros((0, 2))
-    m = markers
-    x, y = lonlat_to_crs(np.asarray(m.lon_deg, float), np.asarray(m.lat_deg, float), epsg)
-    return [str(i) for i in m.id], np.column_stack([x, y])
-
-
-def fix_quality_summary(ctx: SurveyContext) -> dict:
-    t = ctx.survey.frames.time_s
-    q = ctx.track.fix_quality_at(t)
-    values, counts = np.unique(q, return_counts=True)
-    return {"counts_at_frames": {str(int(v)): int(c) for v, c in zip(values, counts,
-                                                                        strict=True)},
-            "rtk_fixed_share": float(np.mean(q == 4)) if q.size else 0.0,
-            "worst_during_frames": int(q.min()) if q.size else None,
-            "degraded": bool(np.any(q != 4))}
 
 

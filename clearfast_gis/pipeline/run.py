@@ -88,11 +88,12 @@ def _run(c: RunContext, first: int | None, last: int) -> dict:
         manifest = c[stages.PRODUCTS].manifest
     else:
         from clearfast_gis.export.products import base_manifest
-        from clearfast_gis.pipeline.inputs import fix_quality_summary
+        from clearfast_gis.geometry.gnss import fix_quality_summary
 
         manifest = base_manifest(read.ctx.survey, read.epsg, c.options,
                                  c[stages.MOSAICS].scan_records if stages.MOSAICS in c.records
-                                 else {}, fix_quality_summary(read.ctx))
+                                 else {}, fix_quality_summary(read.ctx.track,
+                                                             read.ctx.survey.frames.time_s))
         manifest["products"] = {"mosaics": "mosaics/", "footprint": "footprint.geojson"}
     adjustment = c.records.get(stages.ADJUSTMENT)
     manifest["attitude_adjustment"] = None if adjustment is None else adjustment.summary

@@ -18,7 +18,7 @@ import numpy as np
 
 from clearfast_gis.atomic import atomic_path
 from clearfast_gis.attitude import ReferenceMosaic, reposed, reposed_in_time, scan_attitude
-from clearfast_gis.attitude.placement import placement_attitude
+from clearfast_gis.attitude.placement import nearest_attitude, placement_attitude
 from clearfast_gis.export.cog import band_description, read_mosaic, write_cog
 from clearfast_gis.mosaic import build_scan_mosaic, temporal_residual
 from clearfast_gis.mosaic.build import FrameCorrection
@@ -50,13 +50,6 @@ def source_path(products: Path, scan: int) -> Path:
     p = products / source_rel(scan)
     p.parent.mkdir(parents=True, exist_ok=True)
     return p
-
-
-def _neighbour(scan: int, done: dict[int, tuple]) -> tuple:
-    """Attitude of the processed scan nearest ``scan`` (zero attitude if none)."""
-    if not done:
-        return (0.0, 0.0, 0.0)
-    return done[min(done, key=lambda s: abs(s - scan))]
 
 
 class ScanJob:
@@ -244,7 +237,7 @@ def scan_mosaics(job: ScanJob, order: list[int], ref: int, model=None
             progress.advance(n_pos, scan=scan, resumed=True)
         else:
             refs = [r for r in (previous, reference) if r is not None]
-            rec = job.build(scan, refs, _neighbour(scan, attitudes))
+            rec = job.build(scan, refs, nearest_attitude(scan, attitudes))
         if rec.get("attitude"):
             attitudes[scan] = tuple(rec["attitude"]["attitude_rpy_deg"])
         scan_records[scan] = dict(rec)

@@ -223,6 +223,7 @@ class Products:
 # -- stages --------------------------------------------------------------------------------
 
 def _read(c: RunContext) -> SurveyRead:
+    from clearfast_gis.geometry.gnss import survey_markers
     from clearfast_gis.mosaic.survey_grid import mosaic_grid_for, pixel_size, reference_scan
     from clearfast_gis.pipeline import inputs
 
@@ -233,7 +234,7 @@ def _read(c: RunContext) -> SurveyRead:
     if c.fresh:
         c.state.units = {}
     ref = reference_scan(survey, c.options.reference_scan)
-    ids, xy = inputs.survey_markers(report.logs.markers, epsg)
+    ids, xy = survey_markers(report.logs.markers, epsg)
     return SurveyRead(ctx, epsg, report, ref, tuple(sorted(int(x) for x in survey.scans)),
                       mosaic_grid_for(ctx, epsg, pixel_size(survey, c.options.pixel_size_m), ref),
                       tuple(ids), xy)

@@ -22,9 +22,9 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from clearfast_gis.atomic import is_temporary
 from clearfast_gis.cli.main import cli
 from clearfast_gis.pipeline.stages import STAGE_NAMES, STAGES
-from clearfast_gis.pipeline.state import is_temporary
 from clearfast_gis.survey.testing import make_minimal_survey
 from tests.product_digests import comparable_digests, product_files
 
