@@ -33,7 +33,8 @@ def background_clutter_k(stack: np.ndarray, labels: np.ndarray, pixel_size_m: fl
     """
     size = max(3, int(round(scale_m / pixel_size_m)) | 1)
     spreads = []
-    for img in np.asarray(stack, dtype=np.float64):
+    for band in stack:  # one image at a time: no float64 copy of the stack
+        img = np.asarray(band, dtype=np.float64)
         ok = np.isfinite(img)
         if not ok.any():
             continue
