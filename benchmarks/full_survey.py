@@ -81,8 +81,15 @@ def products_dir(work: Path, survey: Path, kernels: str) -> Path:
     return work / "products" / f"{tag}-{kernels}"
 
 
+_RUNS: dict[tuple[str, str], dict] = {}
+
+
 def process(survey: Path, products: Path, kernels: str) -> dict:
-    """Run ``clearfast process`` from scratch in a child process; its products.json."""
+    """Run ``clearfast process`` from scratch in a child process (once per invocation of this
+    script for the same survey and kernels); its products.json."""
+    key = (str(survey.resolve()), kernels)
+    if key in _RUNS:
+        return _RUNS[key]
     cmd = [sys.executable, "-m", "clearfast_gis.cli.main", "process", str(survey), "-o",
            str(products), "--no-resume", "--progress", "none", "--kernels", kernels]
     t0 = time.perf_counter()
@@ -90,6 +97,7 @@ def process(survey: Path, products: Path, kernels: str) -> dict:
     wall = time.perf_counter() - t0
     manifest = json.loads((products / "products.json").read_text())
     manifest["_child_wall_s"] = wall
+    _RUNS[key] = manifest
     return manifest
 
 
