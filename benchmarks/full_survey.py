@@ -77,7 +77,7 @@ def subset(survey: Path, n_scans: int, work: Path) -> Path:
 
 def products_dir(work: Path, survey: Path, kernels: str) -> Path:
     """Where the products of ``survey`` with ``kernels`` go (in ``work``)."""
-    tag = survey.name if "scans" in survey.name else f"{survey.resolve().parent.name}-all"
+    tag = survey.name if survey.name != "survey" else survey.resolve().parent.name
     return work / "products" / f"{tag}-{kernels}"
 
 
@@ -320,7 +320,7 @@ def scaling_table(surveys: list[Path], scans: list[int], work: Path) -> None:
             m = process(sub, products_dir(work, sub, "fast"), "fast")
             tot, nf = m["resources"]["total"], n_frames(sub)
             det = m["resources"]["stages"].get("detection", {}).get("peak_rss_mb", float("nan"))
-            print(f"| {survey.resolve().parent.name}/{survey.name} | {w}x{h} | {n} | {nf} | "
+            print(f"| {survey.name} | {w}x{h} | {n} | {nf} | "
                   f"{tot['wall_s']:.0f} | {tot['cpu_s']:.0f} | {tot['peak_rss_mb']:.0f} | "
                   f"{det:.0f} | {1e3 * tot['wall_s'] / nf:.1f} | "
                   f"{1e9 * tot['cpu_s'] / (nf * w * h):.0f} |")
