@@ -14,7 +14,11 @@ mosaics (without the thermal characterisation) to show the trade-off.
 
 Prints a markdown table. Simulated surveys and products are kept in ``--work`` (default
 ``/tmp/clearfast-bench``) and reused when present (``--redo-anomalies`` re-runs the anomaly
-stage on kept mosaics).
+stage on kept mosaics). Surveys simulated and processed elsewhere are scored as they are with
+``--pair NAME SURVEY PRODUCTS`` (repeatable; nothing is simulated or processed for them):
+
+    python benchmarks/detection_accuracy.py --seeds --fast \
+        --pair trial-s0 /data/trial0 /data/p_trial0 --pair trial-s1-drift ...
 
 A second table scores the ranked suspect list and the depths
 (:func:`clearfast_gis.evaluation.ranked.score_ranked`): Pd of mines at most 5 cm deep at
@@ -30,6 +34,7 @@ from __future__ import annotations
 
 import argparse
 import dataclasses
+import json
 import time
 from pathlib import Path
 
@@ -120,7 +125,10 @@ def print_ranked(ranked) -> None:
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--preset", default="demo")
-    ap.add_argument("--seeds", type=int, nargs="+", default=[0, 1, 2])
+    ap.add_argument("--seeds", type=int, nargs="*", default=[0, 1, 2])
+    ap.add_argument("--pair", nargs=3, action="append", default=[],
+                    metavar=("NAME", "SURVEY", "PRODUCTS"),
+                    help="score an existing survey and its products as they are")
     ap.add_argument("--drift", action="store_true")
     ap.add_argument("--sweep", action="store_true")
     ap.add_argument("--work", default="/tmp/clearfast-bench")
@@ -160,6 +168,15 @@ def main() -> None:
                     sweep.setdefault((eps, frac), []).append(score_against_truth(survey,
                                                                                   products))
             process_survey(survey, products, ProcessOptions())  # restore the defaults
+    for name, survey, products in args.pair:
+        s = score_against_truth(survey, products)
+        ranked.append((name, score_ranked(survey, products)))
+        if not args.fast:
+            manifest = json.loads((Path(products) / "products.json").read_text())
+            res = [r["residual_px"] for r in manifest["scans"]
+                   if r.get("residual_px") is not None]
+            rows.append((name, s, float("nan"), float("nan"), manifest.get("markers", {}), res,
+                         placement_errors(survey, products)))
     print("| survey | Pd (<= 5 cm) | FA/m2 | centre RMS cm | diameter RMS % | depth RMS cm "
           "(n) | markers RMS cm | residual vs reference px, measured (median / max, > 0.5) "
           "| misregistration from the true poses px, RMS over the cells (median / max, > 0.5) "
