@@ -201,8 +201,8 @@ def build_site_table(
             return series
 
         cells = [(i, j) for i in range(depths.size) for j in range(la.size)]
-        for (i, j), centre in zip(cells, thread_map(centre_series, cells), strict=True):
-            contrast[q, i, j] = centre - bg_steps
+        for (i, j), series in zip(cells, thread_map(centre_series, cells), strict=True):
+            contrast[q, i, j] = series - bg_steps
     return SiteTable(radii, depths, la, t_grid, contrast, background, height_m,
                      object_rho_c_jm3k, centre)
 
