@@ -5,6 +5,8 @@ from __future__ import annotations
 import numpy as np
 from scipy import ndimage
 
+from clearfast_gis.parallel import thread_map
+
 #: Scale of the local background a contrast is measured against, metres (an AP mine and its
 #: ring).
 CLUTTER_SCALE_M = 0.3
@@ -32,14 +34,18 @@ def background_clutter_k(stack: np.ndarray, labels: np.ndarray, pixel_size_m: fl
         NaN when no scan has background cells.
     """
     size = max(3, int(round(scale_m / pixel_size_m)) | 1)
-    spreads = []
-    for img in np.asarray(stack, dtype=np.float64):
+    background = labels == 0
+
+    def spread(band: np.ndarray) -> float | None:
+        img = np.asarray(band, dtype=np.float64)  # one image at a time: no float64 stack
         ok = np.isfinite(img)
         if not ok.any():
-            continue
+            return None
         filled = np.where(ok, img, np.median(img[ok]))
         local = filled - ndimage.median_filter(filled, size=size)
-        v = local[ok & (labels == 0)]
-        if v.size:
-            spreads.append(1.4826 * np.median(np.abs(v - np.median(v))))
+        v = local[ok & background]
+        return 1.4826 * np.median(np.abs(v - np.median(v))) if v.size else None
+
+    # the median filter releases the GIL: the scans on threads, combined in scan order
+    spreads = [v for v in thread_map(spread, stack) if v is not None]
     return float(np.median(spreads)) if spreads else float("nan")
