@@ -26,7 +26,7 @@ from clearfast_gis.detection.screening import screen
 from clearfast_gis.evaluation.operating import reliability_table
 from clearfast_gis.evaluation.truth import MINE_KINDS, read_truth_objects
 
-MODEL_VERSION = "logistic-1"
+MODEL_VERSION = "logistic-2"
 
 
 def detection_records(products: Path) -> list[dict]:
@@ -56,7 +56,7 @@ def training_rows(survey: Path, products: Path) -> tuple[np.ndarray, np.ndarray]
     """Features (M, F) and labels (M,) of the screened detections of one survey."""
     n_scans = len(json.loads((products / "products.json").read_text())["scans"])
     suspects, _ = screen(detection_records(products), n_scans)
-    x = np.array([features(r, n_scans) for r in suspects]).reshape(-1, len(FEATURES))
+    x = np.array([features(r) for r in suspects]).reshape(-1, len(FEATURES))
     return x, is_mine(suspects, survey)
 
 

@@ -42,6 +42,7 @@ from pathlib import Path
 
 import numpy as np
 
+from clearfast_gis.detection.likelihood import load_model
 from clearfast_gis.evaluation.operating import reliability_table
 from clearfast_gis.evaluation.ranked import score_ranked
 from clearfast_gis.evaluation.truth import placement_errors, score_against_truth
@@ -136,10 +137,14 @@ def main() -> None:
     ap.add_argument("--sweep", action="store_true")
     ap.add_argument("--work", default="/tmp/clearfast-bench")
     ap.add_argument("--redo-anomalies", action="store_true")
+    ap.add_argument("--rerank", action="store_true",
+                    help="screen and rank the detections again under the current likelihood "
+                         "model (products made before a refit)")
     ap.add_argument("--fast", action="store_true",
                     help="skip the placement errors against the true poses")
     args = ap.parse_args()
     ranked = []
+    model = load_model() if args.rerank else None
     work = Path(args.work)
     rows = []
     sweep: dict[tuple, list] = {}
@@ -155,7 +160,7 @@ def main() -> None:
                                   from_stage="detection" if args.redo_anomalies else None)
         t_proc = time.perf_counter() - t0
         s = score_against_truth(survey, products)
-        ranked.append((tag, score_ranked(survey, products)))
+        ranked.append((tag, score_ranked(survey, products, model)))
         if args.fast:
             continue
         res = [r["residual_px"] for r in manifest["scans"] if r.get("residual_px") is not None]
@@ -171,9 +176,10 @@ def main() -> None:
                     sweep.setdefault((eps, frac), []).append(score_against_truth(survey,
                                                                                   products))
             process_survey(survey, products, ProcessOptions())  # restore the defaults
+    model = load_model() if args.rerank else None
     for name, survey, products in args.pair:
         s = score_against_truth(survey, products)
-        ranked.append((name, score_ranked(survey, products)))
+        ranked.append((name, score_ranked(survey, products, model)))
         if not args.fast:
             manifest = json.loads((Path(products) / "products.json").read_text())
             res = [r["residual_px"] for r in manifest["scans"]
