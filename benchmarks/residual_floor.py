@@ -31,7 +31,7 @@ from clearfast_gis.evaluation.truth import placement_errors, read_true_poses
 from clearfast_gis.export.cog import read_mosaic
 from clearfast_gis.geometry.grid import GroundGrid
 from clearfast_gis.mosaic import FrameInput, build_scan_mosaic, temporal_residual
-from clearfast_gis.pipeline.frames import scan_frames
+from clearfast_gis.mosaic.frames import scan_frames
 from clearfast_gis.pipeline.inputs import air_function, open_context
 from clearfast_gis.pipeline.state import mosaic_rel
 

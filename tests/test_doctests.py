@@ -14,6 +14,8 @@ MODULES = [
     "clearfast_gis.attitude.neighbours",
     "clearfast_gis.pipeline.state",
     "clearfast_gis.pipeline.run",
+    "clearfast_gis.progress",
+    "clearfast_gis.kernels",
 ]
 
 

@@ -312,3 +312,26 @@ def smooth_static_track(track: PlatformTrack, window_s: float = 600.0,
         tbar = s1 / s0
         pos[idx, k] = x0 + mean + slope * (tc - tbar)
     return dataclasses.replace(track, position_m=pos, max_gap_s=float(max_gap_s))
+
+
+def survey_markers(markers, epsg: int) -> tuple[list[str], np.ndarray]:
+    """Surveyed markers (``Markers`` or None) in the survey CRS: ids and (M, 2) positions."""
+    if markers is None:
+        return [], np.zeros((0, 2))
+    m = markers
+    x, y = lonlat_to_crs(np.asarray(m.lon_deg, float), np.asarray(m.lat_deg, float), epsg)
+    return [str(i) for i in m.id], np.column_stack([x, y])
+
+
+def fix_quality_summary(track: PlatformTrack, time_s: np.ndarray) -> dict:
+    """The GNSS fix quality at the frames' times ``time_s`` (UTC epoch s): counts per quality,
+    the RTK-fixed share, the worst, and whether any frame was taken without an RTK fix
+    (``products.json`` ``fix_quality``)."""
+    t = time_s
+    q = track.fix_quality_at(t)
+    values, counts = np.unique(q, return_counts=True)
+    return {"counts_at_frames": {str(int(v)): int(c) for v, c in zip(values, counts,
+                                                                        strict=True)},
+            "rtk_fixed_share": float(np.mean(q == 4)) if q.size else 0.0,
+            "worst_during_frames": int(q.min()) if q.size else None,
+            "degraded": bool(np.any(q != 4))}

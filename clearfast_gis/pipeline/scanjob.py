@@ -18,20 +18,19 @@ import numpy as np
 
 from clearfast_gis.atomic import atomic_path
 from clearfast_gis.attitude import ReferenceMosaic, reposed, reposed_in_time, scan_attitude
+from clearfast_gis.attitude.placement import nearest_attitude, placement_attitude
 from clearfast_gis.export.cog import band_description, read_mosaic, write_cog
 from clearfast_gis.mosaic import build_scan_mosaic, temporal_residual
 from clearfast_gis.mosaic.build import FrameCorrection
-from clearfast_gis.parallel import thread_imap
-from clearfast_gis.pipeline.adjustment import (
-    placement_attitude,
-)
-from clearfast_gis.pipeline.frames import (
+from clearfast_gis.mosaic.frames import (
     SurveyContext,
     first_scan_band_frames,
     frame_pose,
     scan_frames,
+    scan_times,
 )
-from clearfast_gis.pipeline.inputs import air_function, scan_time
+from clearfast_gis.parallel import thread_imap
+from clearfast_gis.pipeline.inputs import air_function
 from clearfast_gis.pipeline.state import StageState, mosaic_rel, source_rel
 from clearfast_gis.progress import NULL_PROGRESS, Progress
 from clearfast_gis.registration import ConformalTransform, estimate_band_offsets
@@ -51,13 +50,6 @@ def source_path(products: Path, scan: int) -> Path:
     p = products / source_rel(scan)
     p.parent.mkdir(parents=True, exist_ok=True)
     return p
-
-
-def _neighbour(scan: int, done: dict[int, tuple]) -> tuple:
-    """Attitude of the processed scan nearest ``scan`` (zero attitude if none)."""
-    if not done:
-        return (0.0, 0.0, 0.0)
-    return done[min(done, key=lambda s: abs(s - scan))]
 
 
 class ScanJob:
@@ -172,7 +164,7 @@ class ScanJob:
                               max_shift_m=options.max_shift_m,
                               max_angle_deg=options.max_angle_deg,
                               seam_balance=options.seam_balance, progress=progress)
-        t_start, t_mean = scan_time(survey, scan)
+        t_start, t_mean = scan_times(survey, scan)
         rec = {"scan": scan, "time_s": t_mean, "start_s": t_start,
                "attitude": None if fit is None else fit.as_dict(),
                "ties": [] if fit is None else [t.as_list() for t in fit.ties],
@@ -245,7 +237,7 @@ def scan_mosaics(job: ScanJob, order: list[int], ref: int, model=None
             progress.advance(n_pos, scan=scan, resumed=True)
         else:
             refs = [r for r in (previous, reference) if r is not None]
-            rec = job.build(scan, refs, _neighbour(scan, attitudes))
+            rec = job.build(scan, refs, nearest_attitude(scan, attitudes))
         if rec.get("attitude"):
             attitudes[scan] = tuple(rec["attitude"]["attitude_rpy_deg"])
         scan_records[scan] = dict(rec)

@@ -14,7 +14,7 @@ import numpy as np
 from clearfast_gis.errors import InvalidInput
 from clearfast_gis.geometry.gnss import PlatformTrack
 from clearfast_gis.geometry.pose import CameraPose, pose_from_ptu
-from clearfast_gis.mosaic import FrameInput
+from clearfast_gis.mosaic.build import FrameInput
 from clearfast_gis.radiometry.calibration import CalibrationEvent
 from clearfast_gis.radiometry.camera import CameraRadiometry
 from clearfast_gis.radiometry.stage import (
