@@ -4,7 +4,8 @@ surveys and write its parameters to ``clearfast_gis/data/likelihood.json``.
     python benchmarks/calibrate_likelihood.py --work /tmp/clearfast-bench \
         --tags demo-s10 demo-s11 ... [--write]
 
-Each tag names ``WORK/TAG/survey`` (with ``truth/``) and ``WORK/TAG/products`` (processed).
+Each tag names ``WORK/TAG/survey`` (with ``truth/``) and ``WORK/TAG/products`` (processed);
+``--pair NAME SURVEY PRODUCTS`` (repeatable) adds a survey and its products kept elsewhere.
 Every detection of the products that passes the screening
 (:mod:`clearfast_gis.detection.screening`) is a training row; its label is 1 when it lies
 within the radius plus 5 cm of a true mine of any depth. The surveys fitted on must never be
@@ -25,7 +26,7 @@ from clearfast_gis.detection.screening import screen
 from clearfast_gis.evaluation.operating import reliability_table
 from clearfast_gis.evaluation.truth import MINE_KINDS, read_truth_objects
 
-MODEL_VERSION = "logistic-1"
+MODEL_VERSION = "logistic-2"
 
 
 def detection_records(products: Path) -> list[dict]:
@@ -55,7 +56,7 @@ def training_rows(survey: Path, products: Path) -> tuple[np.ndarray, np.ndarray]
     """Features (M, F) and labels (M,) of the screened detections of one survey."""
     n_scans = len(json.loads((products / "products.json").read_text())["scans"])
     suspects, _ = screen(detection_records(products), n_scans)
-    x = np.array([features(r, n_scans) for r in suspects]).reshape(-1, len(FEATURES))
+    x = np.array([features(r) for r in suspects]).reshape(-1, len(FEATURES))
     return x, is_mine(suspects, survey)
 
 
@@ -64,12 +65,18 @@ def main() -> None:
 
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--work", default="/tmp/clearfast-bench")
-    ap.add_argument("--tags", nargs="+", required=True)
+    ap.add_argument("--tags", nargs="*", default=[])
+    ap.add_argument("--pair", nargs=3, action="append", default=[],
+                    metavar=("NAME", "SURVEY", "PRODUCTS"))
     ap.add_argument("--write", action="store_true", help="write clearfast_gis/data/likelihood.json")
     args = ap.parse_args()
     xs, ys = [], []
-    for tag in args.tags:
-        x, y = training_rows(Path(args.work) / tag / "survey", Path(args.work) / tag / "products")
+    pairs = [(t, Path(args.work) / t / "survey", Path(args.work) / t / "products")
+             for t in args.tags] + [(n, Path(s), Path(p)) for n, s, p in args.pair]
+    if not pairs:
+        ap.error("give --tags or --pair")
+    for tag, survey, products in pairs:
+        x, y = training_rows(survey, products)
         xs.append(x)
         ys.append(y)
         print(f"{tag}: {len(y)} suspects, {int(y.sum())} mines")
@@ -82,7 +89,7 @@ def main() -> None:
              "scale": [round(float(v), 6) for v in scale],
              "coef": [round(float(v), 6) for v in fit.coef_[0]],
              "intercept": round(float(fit.intercept_[0]), 6),
-             "fitted_on": list(args.tags), "n_rows": int(len(y)), "n_mines": int(y.sum())}
+             "fitted_on": [t for t, _, _ in pairs], "n_rows": int(len(y)), "n_mines": int(y.sum())}
     p = p_mine_from_features(x, model)
     model["reliability_in_sample"] = reliability_table(p, y)
     print(json.dumps(model, indent=1))

@@ -14,27 +14,35 @@ mosaics (without the thermal characterisation) to show the trade-off.
 
 Prints a markdown table. Simulated surveys and products are kept in ``--work`` (default
 ``/tmp/clearfast-bench``) and reused when present (``--redo-anomalies`` re-runs the anomaly
-stage on kept mosaics).
+stage on kept mosaics). Surveys simulated and processed elsewhere are scored as they are with
+``--pair NAME SURVEY PRODUCTS`` (repeatable; nothing is simulated or processed for them):
+
+    python benchmarks/detection_accuracy.py --seeds --fast \
+        --pair trial-s0 /data/trial0 /data/p_trial0 --pair trial-s1-drift ...
 
 A second table scores the ranked suspect list and the depths
 (:func:`clearfast_gis.evaluation.ranked.score_ranked`): Pd of mines at most 5 cm deep at
 <= 0.01 false alarms per m2 going down the list by ``p_mine``; depth mean absolute error at
 0-4 cm, 6-8 cm and of surface-laid mines; deep mines characterised wrongly (``ok`` and more
 than 2 cm off); the share of characterised mines within 1 and 2 sigma; the share of 0-4 cm
-mines whose diffusivity is within 25 %. Pooled over the seeds, and the reliability table of
-``p_mine`` (of the suspects predicted p, how many are mines). Score it only on seeds the
-likelihood model was not fitted on (``clearfast_gis/data/likelihood.json`` ``fitted_on``).
+mines whose diffusivity is within 25 %; the 68th percentile of abs(depth error) / sigma (1
+for honest sigmas: the factor they would have to be scaled by). Pooled over the seeds, and
+the reliability table of ``p_mine`` (of the suspects predicted p, how many are mines). Score
+it only on seeds the likelihood model was not fitted on
+(``clearfast_gis/data/likelihood.json`` ``fitted_on``).
 """
 
 from __future__ import annotations
 
 import argparse
 import dataclasses
+import json
 import time
 from pathlib import Path
 
 import numpy as np
 
+from clearfast_gis.detection.likelihood import load_model
 from clearfast_gis.evaluation.operating import reliability_table
 from clearfast_gis.evaluation.ranked import score_ranked
 from clearfast_gis.evaluation.truth import placement_errors, score_against_truth
@@ -74,6 +82,7 @@ def depth_figures(depths) -> dict:
     return {"mae_0_4": mae(0.0, 0.04), "mae_6_8": mae(0.06, 0.08), "mae_0": mae(0.0, 0.0),
             "within1": float(np.mean(z <= 1)) if z.size else float("nan"),
             "within2": float(np.mean(z <= 2)) if z.size else float("nan"), "n_z": int(z.size),
+            "z68": float(np.quantile(z, 0.683)) if z.size else float("nan"),
             "alpha25": float(np.mean(alpha_ok)) if alpha_ok else float("nan"),
             "alpha_within1": float(np.mean(za <= 1)) if za.size else float("nan"),
             "n_alpha": len(alpha_ok), "deep_wrong": wrong, "n_deep": len(deep),
@@ -86,9 +95,9 @@ def print_ranked(ranked) -> None:
         return
     print("\n| survey | suspects / candidates | Pd (<= 5 cm) at <= 0.01 FA/m2 by p_mine | "
           "Pd, whole list | depth MAE 0-4 cm, cm (n) | 6-8 cm (n) | surface-laid (n) | "
-          "deep mines ok but > 2 cm off (of) | within 1 / 2 sigma (n) | "
-          "diffusivity within 25 % at 0-4 cm; within 1 sigma (n) |")
-    print("|---|---|---|---|---|---|---|---|---|---|")
+          "deep mines ok but > 2 cm off (of) | within 1 / 2 sigma (n) | 68th percentile of "
+          "abs(error) / sigma | diffusivity within 25 % at 0-4 cm; within 1 sigma (n) |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|")
     pooled = []
     for tag, r in ranked:
         f = depth_figures(r.depths)
@@ -98,8 +107,8 @@ def print_ranked(ranked) -> None:
               f"{r.pd[-1]:.2f} | {f['mae_0_4'][0]:.2f} ({f['mae_0_4'][1]}) | "
               f"{f['mae_6_8'][0]:.2f} ({f['mae_6_8'][1]}) | {f['mae_0'][0]:.2f} "
               f"({f['mae_0'][1]}) | {f['deep_wrong']} ({f['n_deep']}) | {f['within1']:.2f} / "
-              f"{f['within2']:.2f} ({f['n_z']}) | {f['alpha25']:.2f}; {f['alpha_within1']:.2f} "
-              f"({f['n_alpha']}) |")
+              f"{f['within2']:.2f} ({f['n_z']}) | {f['z68']:.2f} | {f['alpha25']:.2f}; "
+              f"{f['alpha_within1']:.2f} ({f['n_alpha']}) |")
     f = depth_figures(pooled)
     n_mines = sum(r.n_scored_mines for _, r in ranked)
     found = sum(r.pd_at(0.01) * r.n_scored_mines for _, r in ranked)
@@ -107,7 +116,7 @@ def print_ranked(ranked) -> None:
           f"{f['mae_0_4'][0]:.2f} ({f['mae_0_4'][1]}) | {f['mae_6_8'][0]:.2f} "
           f"({f['mae_6_8'][1]}) | {f['mae_0'][0]:.2f} ({f['mae_0'][1]}) | {f['deep_wrong']} "
           f"({f['n_deep']}) | {f['within1']:.2f} / {f['within2']:.2f} ({f['n_z']}) | "
-          f"{f['alpha25']:.2f}; {f['alpha_within1']:.2f} ({f['n_alpha']}) |")
+          f"{f['z68']:.2f} | {f['alpha25']:.2f}; {f['alpha_within1']:.2f} ({f['n_alpha']}) |")
     p = np.concatenate([r.p_mine for _, r in ranked])
     y = np.concatenate([r.is_mine for _, r in ranked])
     print("\n| p_mine | suspects | mean p_mine | share that are mines |\n|---|---|---|---|")
@@ -120,15 +129,22 @@ def print_ranked(ranked) -> None:
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--preset", default="demo")
-    ap.add_argument("--seeds", type=int, nargs="+", default=[0, 1, 2])
+    ap.add_argument("--seeds", type=int, nargs="*", default=[0, 1, 2])
+    ap.add_argument("--pair", nargs=3, action="append", default=[],
+                    metavar=("NAME", "SURVEY", "PRODUCTS"),
+                    help="score an existing survey and its products as they are")
     ap.add_argument("--drift", action="store_true")
     ap.add_argument("--sweep", action="store_true")
     ap.add_argument("--work", default="/tmp/clearfast-bench")
     ap.add_argument("--redo-anomalies", action="store_true")
+    ap.add_argument("--rerank", action="store_true",
+                    help="screen and rank the detections again under the current likelihood "
+                         "model (products made before a refit)")
     ap.add_argument("--fast", action="store_true",
                     help="skip the placement errors against the true poses")
     args = ap.parse_args()
     ranked = []
+    model = load_model() if args.rerank else None
     work = Path(args.work)
     rows = []
     sweep: dict[tuple, list] = {}
@@ -144,7 +160,7 @@ def main() -> None:
                                   from_stage="detection" if args.redo_anomalies else None)
         t_proc = time.perf_counter() - t0
         s = score_against_truth(survey, products)
-        ranked.append((tag, score_ranked(survey, products)))
+        ranked.append((tag, score_ranked(survey, products, model)))
         if args.fast:
             continue
         res = [r["residual_px"] for r in manifest["scans"] if r.get("residual_px") is not None]
@@ -160,6 +176,16 @@ def main() -> None:
                     sweep.setdefault((eps, frac), []).append(score_against_truth(survey,
                                                                                   products))
             process_survey(survey, products, ProcessOptions())  # restore the defaults
+    model = load_model() if args.rerank else None
+    for name, survey, products in args.pair:
+        s = score_against_truth(survey, products)
+        ranked.append((name, score_ranked(survey, products, model)))
+        if not args.fast:
+            manifest = json.loads((Path(products) / "products.json").read_text())
+            res = [r["residual_px"] for r in manifest["scans"]
+                   if r.get("residual_px") is not None]
+            rows.append((name, s, float("nan"), float("nan"), manifest.get("markers", {}), res,
+                         placement_errors(survey, products)))
     print("| survey | Pd (<= 5 cm) | FA/m2 | centre RMS cm | diameter RMS % | depth RMS cm "
           "(n) | markers RMS cm | residual vs reference px, measured (median / max, > 0.5) "
           "| misregistration from the true poses px, RMS over the cells (median / max, > 0.5) "

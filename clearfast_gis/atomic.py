@@ -90,3 +90,21 @@ def write_bytes(final: str | os.PathLike, data: bytes) -> Path:
 def write_text(final: str | os.PathLike, text: str) -> Path:
     """Write UTF-8 ``text`` to ``final`` atomically and return the final path."""
     return write_bytes(final, text.encode("utf-8"))
+
+
+def is_temporary(name: str) -> bool:
+    """Whether a file name is one of :func:`atomic_path`'s temporaries."""
+    return name.startswith(".") and (name.endswith(".part") or ".part." in name)
+
+
+def remove_temporaries(folder: str | os.PathLike) -> list[Path]:
+    """Delete the atomic writers' temporary files under ``folder``; return what was removed."""
+    removed = []
+    for dirpath, _dirs, names in os.walk(folder):
+        for name in names:
+            if is_temporary(name):
+                p = Path(dirpath) / name
+                with contextlib.suppress(FileNotFoundError):
+                    p.unlink()
+                    removed.append(p)
+    return removed

@@ -4,9 +4,12 @@
 same chain on the mature reference implementations each kernel is checked against. Every
 kernel that has both is one entry of :data:`REGISTRY` (``{name: KernelPair(fast,
 reference)}``); a public function runs ``kernel(name)(...)``, the active set's implementation,
-and holds no branch of its own. The table in ``docs/performance.md`` is
-:func:`markdown_table` (``tests/kernels/test_registry.py`` checks it, and runs both
-implementations of every entry on the same input).
+and holds no branch of its own. Each domain keeps its implementations beside its public
+functions, in two private modules: ``clearfast_gis/<domain>/_kernels.py`` (fast) and
+``clearfast_gis/<domain>/_reference.py`` (reference), each function named after its entry.
+The table in ``docs/performance.md`` is :func:`markdown_table`
+(``tests/kernels/test_registry.py`` checks it, and runs both implementations of every entry on
+the same input).
 
 The thermal inversion itself is the same in both sets: every anomaly is inverted on one site
 table of forward runs (``benchmarks/thermal_inversion.py`` compares it with a model run per
@@ -75,6 +78,11 @@ class KernelPair:
     fast_text: str
     reference_text: str
 
+    @property
+    def domain(self) -> str:
+        """The package that holds both implementations (``"detection"``, ...)."""
+        return self.fast.split(":")[0].split(".")[1]
+
     def implementation(self, kernel_set: str) -> Callable:
         """The implementation of ``kernel_set`` (``"fast"`` or ``"reference"``)."""
         if kernel_set not in KERNELS:
@@ -85,48 +93,48 @@ class KernelPair:
 
 REGISTRY: dict[str, KernelPair] = {
     "top_hat_by_reconstruction": KernelPair(
-        "clearfast_gis.detection.morphology:_top_hat_fast",
-        "clearfast_gis.detection.reference:top_hat_reference",
+        "clearfast_gis.detection._kernels:top_hat_by_reconstruction",
+        "clearfast_gis.detection._reference:top_hat_by_reconstruction",
         "OpenCV disk erosion + hybrid-queue reconstruction (numba)",
         "scikit-image erosion and `reconstruction`"),
     "bottom_hat_by_reconstruction": KernelPair(
-        "clearfast_gis.detection.morphology:_bottom_hat_fast",
-        "clearfast_gis.detection.reference:bottom_hat_reference",
+        "clearfast_gis.detection._kernels:bottom_hat_by_reconstruction",
+        "clearfast_gis.detection._reference:bottom_hat_by_reconstruction",
         "OpenCV disk dilation + hybrid-queue reconstruction (numba)",
         "scikit-image dilation and `reconstruction`"),
     "binary_opening_by_reconstruction": KernelPair(
-        "clearfast_gis.detection.morphology:_binary_opening_fast",
-        "clearfast_gis.detection.reference:binary_opening_reference",
+        "clearfast_gis.detection._kernels:binary_opening_by_reconstruction",
+        "clearfast_gis.detection._reference:binary_opening_by_reconstruction",
         "OpenCV disk erosion + binary reconstruction (numba)",
         "scikit-image erosion and `reconstruction` (8-connected)"),
     "register_conformal": KernelPair(
-        "clearfast_gis.registration.conformal:_register_fast",
-        "clearfast_gis.registration.conformal:_reference",
+        "clearfast_gis.registration._kernels:register_conformal",
+        "clearfast_gis.registration._reference:register_conformal",
         "Parzen-window Mattes MI with its analytic gradient (numba), bounded L-BFGS",
         "SimpleITK Mattes MI, regular-step gradient"),
     "ground_maps": KernelPair(
-        "clearfast_gis.geometry.projection:_ground_maps_fast",
-        "clearfast_gis.geometry.projection:_ground_maps_reference",
+        "clearfast_gis.geometry._kernels:ground_maps",
+        "clearfast_gis.geometry._reference:ground_maps",
         "cell-centre maps over the seen window (numba)",
         "`Camera.project` of every cell (numpy)"),
     "resample": KernelPair(
-        "clearfast_gis.mosaic.project:_resample_cv2",
-        "clearfast_gis.mosaic.project:_resample_scipy",
+        "clearfast_gis.mosaic._kernels:resample",
+        "clearfast_gis.mosaic._reference:resample",
         "`cv2.GaussianBlur` + `cv2.remap`",
         "scipy `gaussian_filter` + `map_coordinates`"),
     "inverse_planck": KernelPair(
-        "clearfast_gis.radiometry.table:_temperature_uniform",
-        "clearfast_gis.radiometry.table:_temperature_paper",
+        "clearfast_gis.radiometry._kernels:inverse_planck",
+        "clearfast_gis.radiometry._reference:inverse_planck",
         "radiance-uniform table (numba)",
         "the paper's 0.1 K table + `np.interp`"),
     "apparent_frame": KernelPair(
-        "clearfast_gis.radiometry.stage:_apparent_fused",
-        "clearfast_gis.radiometry.stage:_apparent_reference",
+        "clearfast_gis.radiometry._kernels:apparent_frame",
+        "clearfast_gis.radiometry._reference:apparent_frame",
         "calibration, atmosphere and inverse Planck fused per pixel (numba)",
         "`raw_to_apparent` step by step (numpy)"),
     "heat_equation": KernelPair(
-        "clearfast_gis.thermal.solver:_run_band",
-        "clearfast_gis.thermal.solver:_run_splu",
+        "clearfast_gis.thermal._kernels:heat_equation",
+        "clearfast_gis.thermal._reference:heat_equation",
         "band Cholesky, whole time loop compiled (numba, GIL released)",
         "scipy sparse LU, time loop in Python"),
 }
@@ -139,15 +147,16 @@ def kernel(name: str) -> Callable:
     Examples
     --------
     >>> with use("reference"):
-    ...     kernel("heat_equation").__name__
-    '_run_splu'
+    ...     kernel("heat_equation").__module__
+    'clearfast_gis.thermal._reference'
     """
     return REGISTRY[name].implementation(_active)
 
 
 def markdown_table() -> str:
     """The registry as the Markdown table of ``docs/performance.md``."""
-    rows = ["| kernel | fast (default) | reference |", "|---|---|---|"]
-    rows += [f"| `{name}` | {k.fast_text} | {k.reference_text} |"
+    rows = ["| kernel | package | fast (default), `_kernels.py` | reference, `_reference.py` |",
+            "|---|---|---|---|"]
+    rows += [f"| `{name}` | `{k.domain}` | {k.fast_text} | {k.reference_text} |"
              for name, k in REGISTRY.items()]
     return "\n".join(rows)

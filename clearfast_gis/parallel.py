@@ -93,7 +93,9 @@ def serial_kernels() -> Iterator[None]:
     With the reference kernels (:func:`clearfast_gis.kernels.reference`, entered before this
     block) SimpleITK runs on one thread too: its multi-threaded registration adds the threads'
     partial metric sums in the order they finish, so the same registration gave results a few
-    1e-11 px apart from call to call; on one thread it gives the same bits every time.
+    1e-11 px apart from call to call; on one thread it gives the same bits every time. This is
+    the one place outside :mod:`clearfast_gis.kernels` that asks which set is active: it sets
+    a library's thread pool (a thread-count policy), it chooses no kernel.
     """
     before = cv2.getNumThreads()
     cv2.setNumThreads(1)

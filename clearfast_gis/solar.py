@@ -8,7 +8,7 @@ Two clocks are in use, deliberately, because changing either would change produc
 - :func:`mean_solar_hour`, mean solar time (UTC shifted by longitude / 15 h, no equation of
   time, within ~16 min of the apparent one): the day and night contrasts of the suspect
   records (``export.records``, windows [10, 16] and [22, 5] h) and the day and night scans
-  shown in the report (``pipeline.products``, nearest to 13 h and 3 h).
+  shown in the report (``export.products``, nearest to 13 h and 3 h).
 """
 
 from __future__ import annotations

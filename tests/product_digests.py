@@ -7,7 +7,7 @@ import json
 import re
 from pathlib import Path
 
-from clearfast_gis.pipeline.state import is_temporary
+from clearfast_gis.atomic import is_temporary
 
 
 def product_files(products: Path) -> dict[str, Path]:

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from clearfast_gis.pipeline.resources import StageMeter, cpu_seconds
+from clearfast_gis.resources import StageMeter, cpu_seconds
 
 
 def test_stage_meter_measures_time_cpu_and_its_own_peak():

@@ -35,7 +35,8 @@ from clearfast_gis.detection.stretch import stretch_threshold
 from clearfast_gis.parallel import thread_imap
 from clearfast_gis.progress import NULL_PROGRESS, Progress
 
-__all__ = ["DetectionResult", "detect_anomalies", "as_image_stack"]
+__all__ = ["DetectionResult", "as_image_stack", "count_finite", "detect_anomalies",
+           "unpack_bits"]
 
 _EIGHT = np.ones((3, 3), dtype=bool)
 
@@ -56,8 +57,6 @@ class DetectionResult:
         ``sum_i O_i`` (hot or cold, per image), the majority-vote count.
     scan_hot, scan_cold : ndarray of bool (N, H, W)
         The per-scan reconstructed maps L_i (OR over bands).
-    opened_hot, opened_cold : ndarray of bool (N, H, W)
-        The per-scan opened maps O_i (OR over bands).
     level, gamma : float
         The vote level used and the combination threshold (None = OR).
     """
@@ -69,8 +68,6 @@ class DetectionResult:
     votes: np.ndarray
     scan_hot: np.ndarray
     scan_cold: np.ndarray
-    opened_hot: np.ndarray
-    opened_cold: np.ndarray
     level: float
     gamma: float | None
 
@@ -96,6 +93,28 @@ def as_image_stack(stack: np.ndarray) -> tuple[np.ndarray, int, int]:
         raise ValueError(f"empty stack {a.shape}")
     images = np.asarray(a.reshape(n * b, a.shape[-2], a.shape[-1]), dtype=np.float32)
     return images, n, b
+
+
+def unpack_bits(packed: np.ndarray, width: int) -> np.ndarray:
+    """A boolean image from its rows packed by ``np.packbits(mask, axis=-1)``: bool (H, width)."""
+    return np.unpackbits(packed, axis=-1, count=width).view(bool)
+
+
+def count_finite(images) -> np.ndarray:
+    """Images with data at each pixel, int32 (H, W), counted one image at a time (no
+    (K, H, W) temporary).
+
+    Parameters
+    ----------
+    images : float (K, H, W), or an iterable of float (H, W)
+    """
+    count = None
+    for img in images:
+        ok = np.isfinite(img)
+        count = ok.astype(np.int32) if count is None else count + ok
+    if count is None:
+        raise ValueError("no images")
+    return count
 
 
 def detect_anomalies(
@@ -155,30 +174,27 @@ def detect_anomalies(
         np.asarray(level, dtype=np.float64) if np.ndim(level) else float(level))
     shape = images.shape[1:]
     want = {"hot": polarity in ("both", "hot"), "cold": polarity in ("both", "cold")}
-    # thresholded hats G_i are kept (the reconstruction of the final mask needs them); the
-    # openings O_i and the reconstructions L_i are folded into counts as they come, so that
-    # memory holds two (K, H, W) boolean stacks, not six
-    g = {p: np.zeros((k, *shape), dtype=bool) for p in ("hot", "cold")}
+    # thresholded hats G_i are kept (the reconstruction of the final mask needs them), one bit
+    # a pixel; the openings O_i and the reconstructions L_i are folded into counts as they
+    # come, so that memory holds two (K, H, W / 8) packed stacks
+    g = {p: np.zeros((k, shape[0], (shape[1] + 7) // 8), dtype=np.uint8)
+         for p in ("hot", "cold")}
     votes = np.zeros(shape, dtype=np.int32)
-    opened = {p: np.zeros((n, *shape), dtype=bool) for p in ("hot", "cold")}
     progress.start("detect", k)
 
-    def one_image(i: int) -> dict[str, np.ndarray]:
-        o = {}
+    def one_image(i: int) -> np.ndarray:
+        seen = np.zeros(shape, dtype=bool)
         for p, hat in (("hot", top_hat_by_reconstruction),
                        ("cold", bottom_hat_by_reconstruction)):
             if want[p]:
-                g[p][i] = stretch_threshold(hat(images[i], d1_px), epsilon,
-                                            ceiling=float(ceilings[i]))
-                o[p] = binary_opening_by_reconstruction(g[p][i], d2_px)
+                gi = stretch_threshold(hat(images[i], d1_px), epsilon,
+                                       ceiling=float(ceilings[i]))
+                g[p][i] = np.packbits(gi, axis=-1)
+                seen |= binary_opening_by_reconstruction(gi, d2_px)
         progress.advance()
-        return o
+        return seen
 
-    for i, o in enumerate(thread_imap(one_image, range(k))):
-        seen = np.zeros(shape, dtype=bool)
-        for p, op in o.items():
-            seen |= op
-            opened[p][i // b] |= op
+    for seen in thread_imap(one_image, range(k)):
         votes += seen
     progress.close()
     m = votes >= level
@@ -188,7 +204,8 @@ def detect_anomalies(
         count = np.zeros(shape, dtype=np.int32)
         scans[p] = np.zeros((n, *shape), dtype=bool)
         if want[p] and m.any():
-            lis = thread_imap(lambda i, p=p: binary_reconstruction(m, g[p][i]), range(k))
+            lis = thread_imap(lambda i, p=p: binary_reconstruction(m, unpack_bits(
+                g[p][i], shape[1])), range(k))
             for i, li in enumerate(lis):
                 count += li
                 scans[p][i // b] |= li
@@ -199,6 +216,5 @@ def detect_anomalies(
         mask_hot=out["hot"], mask_cold=out["cold"], mask=mask,
         labels=labels.astype(np.int32), votes=votes,
         scan_hot=scans["hot"], scan_cold=scans["cold"],
-        opened_hot=opened["hot"], opened_cold=opened["cold"],
         level=level, gamma=gamma,
     )

@@ -41,7 +41,7 @@ from dataclasses import dataclass, field
 import numpy as np
 from skimage.measure import regionprops
 
-from clearfast_gis.detection.detector import DetectionResult, as_image_stack
+from clearfast_gis.detection.detector import DetectionResult, as_image_stack, count_finite
 from clearfast_gis.solar import local_solar_hour
 
 __all__ = ["AnomalyFeatures", "blob_features", "features_table", "summary_polarity"]
@@ -251,7 +251,7 @@ def blob_features(
     cube = images.reshape(n, b, *labels.shape)
     # a pixel seen in some scans only (a footprint that moves, paper §6) still serves the
     # ring of those scans: every mean below is over the scans that saw it
-    valid = np.any(np.isfinite(images), axis=0)
+    valid = count_finite(images) > 0
     image_noise = None
     if noise == "image":  # per image, so that no copy of the whole stack is made
         with warnings.catch_warnings():

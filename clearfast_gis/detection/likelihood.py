@@ -16,8 +16,13 @@ alpha_misfit  characterised diffusivity only: ``min(z^2, 9)`` with
               ``z = (log10 alpha - log10 ALPHA_EXPLOSIVE) / sqrt(s^2 + 0.15^2)``, s the
               estimate's log10 sigma; 0 when not characterised
 characterised 1 when the inversion's status is ``ok``, else 0
-coverage      ``n_scans / scans of the survey``
 ============  ==========================================================================
+
+The share of scans that support a detection is not a feature: on the 6-scan demo surveys the
+model was first fitted on, nearly every detection is seen in 5 or 6 scans and the fit gave it
+a negative weight that the physics does not; on a 48-scan survey under a drifting lift clutter
+is seen in 10-30 % of the scans, far outside that range, and the weight put stones at
+p_mine 0.97 (trial seed 1). The screening's scan rule (a single scan) is what remains of it.
 
 ``p_mine = 1 / (1 + exp(-(b0 + sum_i b_i (x_i - mean_i) / scale_i)))``. The coefficients, the
 feature means and scales, the surveys the model was fitted on and its reliability table are
@@ -36,7 +41,7 @@ from importlib import resources
 import numpy as np
 
 FEATURES = ("strength", "size_misfit", "circularity", "diurnal", "cool_by_day",
-            "alpha_misfit", "characterised", "coverage")
+            "alpha_misfit", "characterised")
 """Model features, in the order of the coefficients."""
 
 MINE_TYPE_DIAMETERS_M = {"AP M2A4": 0.104, "AT M6A2": 0.337}
@@ -52,7 +57,7 @@ PARAMETERS = "likelihood.json"
 """The fitted model's file in ``clearfast_gis/data``."""
 
 
-def features(record: Mapping, n_scans_total: int) -> np.ndarray:
+def features(record: Mapping) -> np.ndarray:
     """Feature vector (len(FEATURES),) of one suspect record (module notes for units)."""
     score = float(record.get("score") or 0.0)
     d = record.get("diameter_m")
@@ -72,9 +77,8 @@ def features(record: Mapping, n_scans_total: int) -> np.ndarray:
              if sa is not None and math.isfinite(float(sa)) else 0.0)
         z = (math.log10(float(alpha)) - LOG10_ALPHA_EXPLOSIVE) / math.hypot(s, ALPHA_CLASS_SPREAD)
         alpha_misfit = min(z * z, 9.0)
-    coverage = float(record.get("n_scans") or 0) / max(n_scans_total, 1)
     return np.array([math.log10(max(score, 0.1)), min(size, 3.0), circ, diurnal, cool,
-                     alpha_misfit, 1.0 if ok else 0.0, coverage])
+                     alpha_misfit, 1.0 if ok else 0.0])
 
 
 @lru_cache(maxsize=1)
@@ -95,13 +99,13 @@ def p_mine_from_features(x: np.ndarray, model: Mapping) -> np.ndarray:
     return 1.0 / (1.0 + np.exp(-eta))
 
 
-def rank(records: list[dict], n_scans_total: int, model: Mapping | None = None) -> list[dict]:
+def rank(records: list[dict], model: Mapping | None = None) -> list[dict]:
     """The records with ``p_mine`` (0-1, 3 decimals) and ``priority`` (1 = first), sorted by
     priority: decreasing ``p_mine``, ties by decreasing score, then by ``anomaly_id``."""
     if not records:
         return []
     model = load_model() if model is None else model
-    x = np.array([features(r, n_scans_total) for r in records])
+    x = np.array([features(r) for r in records])
     p = p_mine_from_features(x, model)
     out = [{**r, "p_mine": round(float(pi), 3)} for r, pi in zip(records, p, strict=True)]
     out.sort(key=lambda r: (-r["p_mine"], -float(r.get("score") or 0.0), str(r["anomaly_id"])))
@@ -118,7 +122,7 @@ def screen_and_rank(records: list[dict], n_scans_total: int,
     from clearfast_gis.detection.screening import screen
 
     suspects, candidates = screen(records, n_scans_total)
-    ranked = {r["anomaly_id"]: r for r in rank(suspects, n_scans_total, model)}
+    ranked = {r["anomaly_id"]: r for r in rank(suspects, model)}
     aside = {r["anomaly_id"]: r for r in candidates}
     out = []
     for r in records:

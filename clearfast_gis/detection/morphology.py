@@ -14,11 +14,6 @@ import numpy as np
 from skimage.morphology import disk
 
 from clearfast_gis import kernels
-from clearfast_gis.detection.reconstruction import (
-    binary_reconstruction,
-    reconstruction_by_dilation,
-    reconstruction_by_erosion,
-)
 
 __all__ = ["binary_opening_by_reconstruction", "bottom_hat_by_reconstruction",
            "disk_footprint", "disk_radius_px", "erode_disk", "dilate_disk",
@@ -124,11 +119,6 @@ def top_hat_by_reconstruction(image: np.ndarray, d1_px: float) -> np.ndarray:
     return kernels.kernel("top_hat_by_reconstruction")(f, d1_px)
 
 
-def _top_hat_fast(f: np.ndarray, d1_px: float) -> np.ndarray:
-    """:func:`top_hat_by_reconstruction` on the fast kernels (float ``f``)."""
-    return f - reconstruction_by_dilation(erode_disk(f, d1_px), f)
-
-
 def bottom_hat_by_reconstruction(image: np.ndarray, d1_px: float) -> np.ndarray:
     """Black top-hat by reconstruction ``b = r*_B(f . D1 | f) - f`` (dual of the top-hat).
 
@@ -139,11 +129,6 @@ def bottom_hat_by_reconstruction(image: np.ndarray, d1_px: float) -> np.ndarray:
     if f.dtype.kind != "f":
         f = f.astype(np.float32)
     return kernels.kernel("bottom_hat_by_reconstruction")(f, d1_px)
-
-
-def _bottom_hat_fast(f: np.ndarray, d1_px: float) -> np.ndarray:
-    """:func:`bottom_hat_by_reconstruction` on the fast kernels (float ``f``)."""
-    return reconstruction_by_erosion(dilate_disk(f, d1_px), f) - f
 
 
 def binary_opening_by_reconstruction(binary: np.ndarray, d2_px: float) -> np.ndarray:
@@ -164,6 +149,3 @@ def binary_opening_by_reconstruction(binary: np.ndarray, d2_px: float) -> np.nda
     return kernels.kernel("binary_opening_by_reconstruction")(g, d2_px)
 
 
-def _binary_opening_fast(g: np.ndarray, d2_px: float) -> np.ndarray:
-    """:func:`binary_opening_by_reconstruction` on the fast kernels (bool ``g``)."""
-    return binary_reconstruction(erode_disk(g, d2_px), g)

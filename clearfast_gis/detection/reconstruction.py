@@ -12,195 +12,26 @@ receive nor pass on values, so they behave like walls, and they are NaN in the r
 the same as giving them the value -inf in both seed and mask for reconstruction by dilation (and
 +inf for reconstruction by erosion).
 
+The compiled kernel and the functions that prepare its input live in
+:mod:`clearfast_gis.detection._kernels` (the package's fast kernels); this module is their
+public face.
+
 Reference: L. Vincent, "Morphological grayscale reconstruction in image analysis: applications
 and efficient algorithms", IEEE Trans. Image Processing 2(2), 176-201, 1993.
 """
 
 from __future__ import annotations
 
-import numba
 import numpy as np
-from scipy import ndimage
+
+from clearfast_gis.detection._kernels import (
+    binary_reconstruction,
+    reconstruction_by_dilation,
+    reconstruction_by_erosion,
+)
 
 __all__ = ["binary_reconstruction", "reconstruction", "reconstruction_by_dilation",
            "reconstruction_by_erosion"]
-
-
-@numba.njit(cache=True, nogil=True, inline="always")
-def _row_max(row, other, best) -> None:  # pragma: no cover - compiled
-    """``best[c] = max(row[c], other[c - 1], other[c], other[c + 1])`` inside the frame: the
-    part of a pixel's neighbourhood that lies in an already final row (no carried
-    dependency, so the loop vectorises)."""
-    for c in range(1, row.size - 1):
-        m = row[c]
-        if other[c - 1] > m:
-            m = other[c - 1]
-        if other[c] > m:
-            m = other[c]
-        if other[c + 1] > m:
-            m = other[c + 1]
-        best[c] = m
-
-
-@numba.njit(cache=True, nogil=True)
-def _hybrid_dilation(f: np.ndarray, g: np.ndarray) -> None:
-    """In-place reconstruction by dilation of ``f`` under ``g`` (2-D, same dtype).
-
-    Both arrays carry a one-pixel frame, and the pixels that are not part of the image, at
-    the lowest value of the dtype in ``f`` and ``g`` alike: such a pixel can neither rise
-    nor raise a neighbour, so the scans need no bounds or validity tests. The frame is not
-    written.
-    """
-    h, w = f.shape
-    n = h * w
-    best = np.empty(w, dtype=f.dtype)  # per row: max over the neighbours of the row before
-    # raster scan: N+ = the four neighbours already visited (up-left, up, up-right, left); the
-    # row above is final, so its part is taken for the whole row first (a loop without a
-    # carried dependency), then the left neighbour in a short sequential pass
-    for r in range(1, h - 1):
-        row, lim = f[r], g[r]
-        _row_max(row, f[r - 1], best)
-        left = row[0]
-        for c in range(1, w - 1):
-            m = best[c] if best[c] > left else left
-            left = m if m < lim[c] else lim[c]
-            row[c] = left
-    # anti-raster scan: N- = right, down-left, down, down-right (same split); then queue the
-    # pixels that can still raise a later neighbour, in the scan's order
-    queue = np.empty(n, dtype=np.int64)  # circular, n slots
-    inq = np.zeros(n, dtype=np.uint8)
-    head = 0
-    tail = 0  # next free slot
-    count = 0
-    for r in range(h - 2, 0, -1):
-        down, row, lim, lim_down = f[r + 1], f[r], g[r], g[r + 1]
-        _row_max(row, down, best)
-        right = row[w - 1]
-        for c in range(w - 2, 0, -1):
-            m = best[c] if best[c] > right else right
-            right = m if m < lim[c] else lim[c]
-            row[c] = right
-        for c in range(w - 2, 0, -1):
-            v = row[c]
-            if ((row[c + 1] < v and row[c + 1] < lim[c + 1])
-                    or (down[c - 1] < v and down[c - 1] < lim_down[c - 1])
-                    or (down[c] < v and down[c] < lim_down[c])
-                    or (down[c + 1] < v and down[c + 1] < lim_down[c + 1])):
-                p = r * w + c
-                queue[tail] = p
-                tail += 1  # fewer than n pixels are queued here: no wrap
-                inq[p] = 1
-                count += 1
-    # FIFO propagation; a pixel is in the queue at most once at a time, so n slots suffice
-    while count > 0:
-        p = queue[head]
-        head += 1
-        if head == n:
-            head = 0
-        count -= 1
-        inq[p] = 0
-        r = p // w
-        c = p - r * w
-        v = f[r, c]
-        for dr in (-1, 0, 1):
-            rr = r + dr
-            for dc in (-1, 0, 1):
-                cc = c + dc
-                fq = f[rr, cc]
-                gq = g[rr, cc]
-                if fq < v and fq != gq:  # False on the frame and on no-data (f = g there)
-                    f[rr, cc] = v if v < gq else gq
-                    q = rr * w + cc
-                    if not inq[q]:
-                        queue[tail] = q
-                        tail += 1
-                        if tail == n:
-                            tail = 0
-                        inq[q] = 1
-                        count += 1
-
-
-_KERNEL_DTYPES = (np.uint8, np.uint16, np.int32, np.float32, np.float64)
-
-
-def _lowest(dtype: np.dtype) -> float | int:
-    return -np.inf if dtype.kind == "f" else np.iinfo(dtype).min
-
-
-def _prepare(seed: np.ndarray, mask: np.ndarray) -> tuple[np.ndarray, np.ndarray,
-                                                          np.ndarray | None]:
-    """Framed copies of seed and mask for :func:`_hybrid_dilation`, and the no-data mask."""
-    seed = np.asarray(seed)
-    mask = np.asarray(mask)
-    if seed.shape != mask.shape or seed.ndim != 2:
-        raise ValueError(f"seed and mask must be 2-D arrays of one shape, got {seed.shape} "
-                         f"and {mask.shape}")
-    dtype = np.result_type(seed.dtype, mask.dtype)
-    if dtype == np.bool_:
-        dtype = np.dtype(np.uint8)
-    elif dtype.type not in _KERNEL_DTYPES:
-        dtype = np.dtype(np.float64)
-    low = _lowest(dtype)
-    h, w = seed.shape
-    f = np.full((h + 2, w + 2), low, dtype=dtype)
-    g = np.full((h + 2, w + 2), low, dtype=dtype)
-    f[1:-1, 1:-1] = seed
-    g[1:-1, 1:-1] = mask
-    nodata = None
-    if dtype.kind == "f":
-        nodata = np.isnan(f) | np.isnan(g)
-        if nodata.any():
-            f[nodata] = low
-            g[nodata] = low
-            nodata = nodata[1:-1, 1:-1]
-        else:
-            nodata = None
-    return f, g, nodata
-
-
-def reconstruction_by_dilation(seed: np.ndarray, mask: np.ndarray) -> np.ndarray:
-    """Grey-scale reconstruction by dilation of ``seed`` under ``mask`` (8-connectivity).
-
-    Parameters
-    ----------
-    seed, mask : ndarray (H, W)
-        bool, uint8, uint16, int32, float32 or float64 (other types are computed in float64).
-        ``seed <= mask`` where both are valid; NaN marks no-data (see the module notes).
-
-    Returns
-    -------
-    ndarray (H, W)
-        The reconstruction, in the common dtype of the inputs (bool for bool inputs), NaN on
-        no-data pixels. Identical to ``skimage.morphology.reconstruction(seed, mask,
-        'dilation')`` on valid data.
-    """
-    is_bool = np.asarray(seed).dtype == np.bool_ and np.asarray(mask).dtype == np.bool_
-    f, g, nodata = _prepare(seed, mask)
-    if np.any(f > g):
-        raise ValueError("reconstruction by dilation needs seed <= mask everywhere")
-    _hybrid_dilation(f, g)
-    out = f[1:-1, 1:-1]
-    if nodata is not None:
-        out[nodata] = np.nan
-    return out.astype(bool) if is_bool else np.ascontiguousarray(out)
-
-
-def reconstruction_by_erosion(seed: np.ndarray, mask: np.ndarray) -> np.ndarray:
-    """Grey-scale reconstruction by erosion (``seed >= mask``), by duality with dilation.
-
-    Same conventions as :func:`reconstruction_by_dilation`; identical to
-    ``skimage.morphology.reconstruction(seed, mask, 'erosion')`` on valid data.
-    """
-    seed = np.asarray(seed)
-    mask = np.asarray(mask)
-    if seed.dtype == np.bool_ and mask.dtype == np.bool_:
-        return ~reconstruction_by_dilation(~seed, ~mask)
-    dtype = np.result_type(seed.dtype, mask.dtype)
-    if dtype.kind == "u":
-        top = np.iinfo(dtype).max
-        return (top - reconstruction_by_dilation(top - seed.astype(dtype),
-                                                 top - mask.astype(dtype))).astype(dtype)
-    return -reconstruction_by_dilation(-seed, -mask)
 
 
 def reconstruction(seed: np.ndarray, mask: np.ndarray, method: str = "dilation") -> np.ndarray:
@@ -212,28 +43,3 @@ def reconstruction(seed: np.ndarray, mask: np.ndarray, method: str = "dilation")
     raise ValueError(f"method must be 'dilation' or 'erosion', got {method!r}")
 
 
-_EIGHT = np.ones((3, 3), dtype=bool)
-
-
-def binary_reconstruction(seed: np.ndarray, mask: np.ndarray) -> np.ndarray:
-    """Binary reconstruction R_B(seed | mask): the 8-connected components of ``mask`` that
-    touch ``seed``.
-
-    Parameters
-    ----------
-    seed, mask : ndarray of bool (H, W)
-
-    Returns
-    -------
-    ndarray of bool (H, W)
-        Equal to ``skimage.morphology.reconstruction(seed & mask, mask)`` cast to bool.
-    """
-    mask = np.asarray(mask, dtype=bool)
-    seed = np.asarray(seed, dtype=bool) & mask
-    labels, n = ndimage.label(mask, structure=_EIGHT)
-    if n == 0:
-        return np.zeros_like(mask)
-    keep = np.zeros(n + 1, dtype=bool)
-    keep[labels[seed]] = True
-    keep[0] = False
-    return keep[labels]

@@ -10,7 +10,7 @@ import numpy as np
 from clearfast_gis.detection import blob_features, detect_anomalies
 from clearfast_gis.detection.clutter import image_clutter_k
 from clearfast_gis.detection.compact import split_oversized
-from clearfast_gis.detection.detector import as_image_stack
+from clearfast_gis.detection.detector import as_image_stack, count_finite
 from clearfast_gis.progress import NULL_PROGRESS, Progress
 
 
@@ -143,7 +143,7 @@ def detect_on_mosaics(stack_c: np.ndarray, times_s: np.ndarray, transform, pixel
     """
     images, n_scans, n_bands = as_image_stack(stack_c)
     if level is None or (gamma is None and gamma_fraction is not None):
-        covered = np.isfinite(images).sum(axis=0)
+        covered = count_finite(images)
         if level is None:
             level = coverage_level(level_fraction, covered, n_scans, n_bands)
         if gamma is None and gamma_fraction is not None:

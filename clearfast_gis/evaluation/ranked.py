@@ -5,11 +5,14 @@ Used by ``benchmarks/detection_accuracy.py`` and the tests; the chain never read
 
 from __future__ import annotations
 
+import json
 import math
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
 
 import numpy as np
+import pandas as pd
 
 from clearfast_gis.evaluation.operating import operating_curve, pd_at_false_alarm_rate
 from clearfast_gis.evaluation.truth import MINE_KINDS, read_truth_objects
@@ -72,20 +75,43 @@ def _near(sx: np.ndarray, sy: np.ndarray, m: dict) -> np.ndarray:
     return np.hypot(sx - m["x"], sy - m["y"]) <= 0.5 * m["diameter_m"] + 0.05
 
 
-def score_ranked(survey: str | Path, products: str | Path) -> RankedScore:
+def _reranked(gpkg: Path, model: Mapping) -> tuple[pd.DataFrame, pd.DataFrame]:
+    """Suspects (in priority order) and candidates of the ``anomalies`` layer, screened and
+    ranked again under ``model``."""
+    import geopandas as gpd
+
+    from clearfast_gis.detection.likelihood import screen_and_rank
+
+    frame = gpd.read_file(gpkg, layer="anomalies")
+    recs = frame.drop(columns="geometry").astype(object).where(frame.notna(), None)
+    n_scans = len(json.loads((gpkg.parent / "products.json").read_text())["scans"])
+    out = pd.DataFrame(screen_and_rank(recs.to_dict("records"), n_scans, model))
+    aside = out["set_aside_reason"].notna()
+    return (out[~aside].sort_values("priority").reset_index(drop=True),
+            out[aside].reset_index(drop=True))
+
+
+def score_ranked(survey: str | Path, products: str | Path,
+                 model: Mapping | None = None) -> RankedScore:
     """Score ``PRODUCTS/anomalies.gpkg`` (layers ``suspects`` in priority order,
     ``candidates``, ``footprint``) against ``SURVEY/truth/objects.csv``.
 
     A suspect is a false alarm when it lies within no mine's radius plus 5 cm (mines of any
     depth: a deep mine found is no false alarm). A scored mine is found at the rank of the
-    first suspect within its radius plus 5 cm.
+    first suspect within its radius plus 5 cm. With a likelihood ``model``
+    (:func:`clearfast_gis.detection.likelihood.load_model`'s form) the detections of the
+    ``anomalies`` layer are screened and ranked again under it instead.
     """
     import geopandas as gpd
     from shapely.geometry import Point
 
     gpkg = Path(products) / "anomalies.gpkg"
-    sus = gpd.read_file(gpkg, layer="suspects").sort_values("priority").reset_index(drop=True)
-    cand = gpd.read_file(gpkg, layer="candidates")
+    if model is None:
+        sus = gpd.read_file(gpkg, layer="suspects").sort_values("priority")
+        sus = sus.reset_index(drop=True)
+        cand = gpd.read_file(gpkg, layer="candidates")
+    else:
+        sus, cand = _reranked(gpkg, model)
     fp = gpd.read_file(gpkg, layer="footprint")
     footprint = fp.geometry.union_all()
     mines = [m for m in read_truth_objects(survey) if m["kind"] in MINE_KINDS

@@ -1,20 +1,55 @@
-"""Attribute records of the ``suspects`` layer (``schemas/anomaly.schema.json``) from the
-detected and characterised anomalies."""
+"""The detected and characterised anomalies of a survey (:class:`AnomalySet`, what the
+products writers take) and the attribute records of the ``suspects`` layer
+(``schemas/anomaly.schema.json``)."""
 
 from __future__ import annotations
 
+import dataclasses
 import math
-from typing import TYPE_CHECKING
+from dataclasses import dataclass
 
 import numpy as np
 
 from clearfast_gis.detection import classify
+from clearfast_gis.detection.features import AnomalyFeatures
+from clearfast_gis.detection.markers import MarkerMatch
 from clearfast_gis.solar import mean_solar_hour
+from clearfast_gis.thermal import Inversion
+from clearfast_gis.thermal.daycontrast import DayContrast
 from clearfast_gis.thermal.sitesoil import first_band
 from clearfast_gis.timeutil import format_utc
 
-if TYPE_CHECKING:
-    from clearfast_gis.pipeline.anomalies import AnomalySet
+
+@dataclass
+class AnomalySet:
+    """Detected anomalies of a survey.
+
+    Attributes
+    ----------
+    labels : int32 (H, W)
+        Anomaly label per mosaic cell (0 = background), ids matching ``features``.
+    features : list of AnomalyFeatures
+        Highest score first, at most ``max_anomalies``.
+    inversions : dict[int, Inversion]
+        Thermal characterisation per anomaly id (missing when not attempted).
+    soil_alpha_m2s, soil_alpha_sigma_m2s : float
+        Soil diffusivity from the thermocouples.
+    notes : list of str
+        What the characterisation had to skip, and why.
+    markers : list of MarkerMatch
+        Known markers found among the anomalies (removed from ``features``).
+    day : DayContrast or None
+        How much contrast the day gave (the thermal model of the logs), when characterised.
+    """
+
+    labels: np.ndarray
+    features: list[AnomalyFeatures]
+    inversions: dict[int, Inversion]
+    soil_alpha_m2s: float = math.nan
+    soil_alpha_sigma_m2s: float = math.nan
+    notes: list[str] = dataclasses.field(default_factory=list)
+    markers: list[MarkerMatch] = dataclasses.field(default_factory=list)
+    day: DayContrast | None = None
 
 
 def _day_night_contrast(times_s: np.ndarray, contrast: np.ndarray, longitude_deg: float

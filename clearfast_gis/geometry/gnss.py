@@ -52,6 +52,25 @@ def utm_epsg_for(lat_deg: float, lon_deg: float) -> int:
     return (32600 if lat >= 0.0 else 32700) + zone
 
 
+def survey_epsg(survey, gnss) -> int:
+    """EPSG code of a survey's CRS: the one its manifest states, else the UTM zone of its
+    first usable GNSS fix.
+
+    Raises
+    ------
+    InvalidInput
+        No CRS stated and no usable fix (naming the GNSS log).
+    """
+    crs = survey.manifest.get("crs") or {}
+    if crs.get("epsg"):
+        return int(crs["epsg"])
+    ok = gnss.usable
+    if not np.any(ok):
+        raise InvalidInput("no GNSS fix to choose the UTM zone", survey.label("gnss"))
+    i = int(np.flatnonzero(ok)[0])
+    return utm_epsg_for(float(gnss.lat_deg[i]), float(gnss.lon_deg[i]))
+
+
 @functools.lru_cache(maxsize=32)
 def _transformer(src: int, dst: int) -> Transformer:
     return Transformer.from_crs(CRS.from_epsg(src), CRS.from_epsg(dst), always_xy=True)
@@ -312,3 +331,26 @@ def smooth_static_track(track: PlatformTrack, window_s: float = 600.0,
         tbar = s1 / s0
         pos[idx, k] = x0 + mean + slope * (tc - tbar)
     return dataclasses.replace(track, position_m=pos, max_gap_s=float(max_gap_s))
+
+
+def survey_markers(markers, epsg: int) -> tuple[list[str], np.ndarray]:
+    """Surveyed markers (``Markers`` or None) in the survey CRS: ids and (M, 2) positions."""
+    if markers is None:
+        return [], np.zeros((0, 2))
+    m = markers
+    x, y = lonlat_to_crs(np.asarray(m.lon_deg, float), np.asarray(m.lat_deg, float), epsg)
+    return [str(i) for i in m.id], np.column_stack([x, y])
+
+
+def fix_quality_summary(track: PlatformTrack, time_s: np.ndarray) -> dict:
+    """The GNSS fix quality at the frames' times ``time_s`` (UTC epoch s): counts per quality,
+    the RTK-fixed share, the worst, and whether any frame was taken without an RTK fix
+    (``products.json`` ``fix_quality``)."""
+    t = time_s
+    q = track.fix_quality_at(t)
+    values, counts = np.unique(q, return_counts=True)
+    return {"counts_at_frames": {str(int(v)): int(c) for v, c in zip(values, counts,
+                                                                        strict=True)},
+            "rtk_fixed_share": float(np.mean(q == 4)) if q.size else 0.0,
+            "worst_during_frames": int(q.min()) if q.size else None,
+            "degraded": bool(np.any(q != 4))}

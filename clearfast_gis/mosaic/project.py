@@ -5,7 +5,6 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-import cv2
 import numpy as np
 from shapely.geometry import Polygon
 
@@ -120,26 +119,6 @@ def resample(band: np.ndarray, map_x: np.ndarray, map_y: np.ndarray, sigma_px: f
         ``gaussian_filter`` and ``map_coordinates`` (``--kernels reference``).
     """
     return kernels.kernel("resample")(band, map_x, map_y, sigma_px)
-
-
-def _resample_cv2(band: np.ndarray, map_x: np.ndarray, map_y: np.ndarray, sigma_px: float
-                  ) -> np.ndarray:
-    """:func:`resample` on the fast kernels (OpenCV)."""
-    if sigma_px > 0:
-        band = cv2.GaussianBlur(band, (0, 0), sigma_px, borderType=cv2.BORDER_REPLICATE)
-    return cv2.remap(band, map_x, map_y, interpolation=cv2.INTER_LINEAR,
-                     borderMode=cv2.BORDER_CONSTANT, borderValue=float("nan"))
-
-
-def _resample_scipy(band: np.ndarray, map_x: np.ndarray, map_y: np.ndarray, sigma_px: float
-                    ) -> np.ndarray:
-    """:func:`resample` on the reference kernels (scipy)."""
-    from scipy import ndimage
-
-    if sigma_px > 0:
-        band = ndimage.gaussian_filter(band, sigma_px, mode="nearest", truncate=3.0)
-    return ndimage.map_coordinates(band, [map_y, map_x], order=1, mode="constant",
-                                   cval=np.nan, prefilter=False).astype(np.float32)
 
 
 def project_frame(frame: np.ndarray, camera, pose: CameraPose, grid: GroundGrid,

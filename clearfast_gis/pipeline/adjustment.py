@@ -4,16 +4,15 @@ from __future__ import annotations
 
 import numpy as np
 
-from clearfast_gis.attitude.adjust import adjust_attitudes, attitude_at
 from clearfast_gis.attitude.neighbours import neighbour_ties
+from clearfast_gis.attitude.placement import (
+    REFINE_MIN_SHARE,
+    fit_survey_attitude,
+    placement_attitude,
+)
 from clearfast_gis.attitude.ties import LinearTie
 from clearfast_gis.pipeline.state import StageState
 from clearfast_gis.progress import Progress
-
-ADJUST_MIN_DEG = 0.01
-"""A scan is projected again when the adjustment changes the attitude of one of its frames by
-more than this, degrees (0.01 deg moves the ground by 0.35 cm at 20 m range)."""
-
 
 STAGE = "attitude_adjustment"
 """The chain's stage (:mod:`clearfast_gis.pipeline.stages`) whose units these are."""
@@ -29,68 +28,19 @@ REFINED_UNIT = f"{STAGE}/{REFINED}"
 """Run-state unit of the refined adjustment."""
 
 
-REFINE_MIN_SHARE = 0.25
-"""The refined adjustment runs (by default) when the first one re-projects at least this share
-of the scans: the platform moved during the survey (the trial's sinking lift), the per-scan
-fits were chained through weak ties and the neighbour ties pay off. When the first adjustment
-leaves (almost) every scan in place, the per-scan fits already agree and a second pass,
-which measures about as many ties again as the whole mosaic stage, would only cost time."""
-
-
-def placement_attitude(rec: dict, model: tuple[np.ndarray, np.ndarray] | None,
-                       times_s: np.ndarray) -> np.ndarray:
-    """Attitude (N, 3), degrees, that a scan's frames at ``times_s`` (N,) were placed with.
-
-    Parameters
-    ----------
-    rec : dict
-        The scan's run-state record.
-    model : (node_times_s (S,), nodes_rpy_deg (S, 3)) or None
-        The survey-wide attitude, for scans placed with it (``rec["adjusted"]``).
-    times_s : float (N,)
-        UTC epoch seconds.
-    """
-    t = np.atleast_1d(np.asarray(times_s, dtype=float))
-    if rec.get("adjusted"):
-        if model is None:
-            raise ValueError(f"scan {rec.get('scan')} was placed with the adjusted attitude, "
-                             "which is not known here")
-        return attitude_at(t, *model)
-    att = (rec.get("attitude") or {}).get("attitude_rpy_deg") or (0.0, 0.0, 0.0)
-    return np.tile(np.asarray(att, dtype=float), (t.size, 1))
-
-
-def _finite_or_none(v: float) -> float | None:
-    return float(v) if np.isfinite(v) else None
-
-
 def stored_model(state: StageState) -> tuple[np.ndarray, np.ndarray] | None:
     """The adjusted attitude recorded in the run state (the refined one once it exists), if
     the adjustment ran.
 
     Scans that the refined adjustment left in place (it moves none of their frames by more
-    than :data:`ADJUST_MIN_DEG`) keep the first adjustment's placement; the refined model
-    describes them to within that bound.
+    than :data:`~clearfast_gis.attitude.placement.ADJUST_MIN_DEG`) keep the first
+    adjustment's placement; the refined model describes them to within that bound.
     """
     unit = state.done(REFINED) or state.done()
     if unit is None:
         return None
     return np.array(unit["node_times_s"], dtype=float), np.array(unit["nodes_rpy_deg"],
                                                                    dtype=float)
-
-
-def _fit(ties: list[LinearTie], order: list[int], node_times: np.ndarray, prior: np.ndarray,
-         times: dict[int, np.ndarray], placed: dict[int, np.ndarray]) -> dict:
-    """Adjust, and list the scans whose frames the result moves by more than
-    :data:`ADJUST_MIN_DEG` from their placement ``placed[s]`` (N, 3) at ``times[s]`` (N,)."""
-    adj = adjust_attitudes(ties, order, node_times, prior)
-    rebuild = [s for s in order
-               if np.max(np.abs(attitude_at(times[s], node_times, adj.nodes_rpy_deg)
-                                - placed[s])) > ADJUST_MIN_DEG]
-    return {"node_times_s": node_times.tolist(), "nodes_rpy_deg": adj.nodes_rpy_deg.tolist(),
-            "rms_before_m": _finite_or_none(adj.rms_before_m),
-            "rms_m": _finite_or_none(adj.rms_m), "n_ties": adj.n_ties,
-            "n_used": adj.n_used, "rebuild": rebuild}
 
 
 def _rebuild(job, unit: dict, level: int, scan_records: dict[int, dict],
@@ -137,7 +87,7 @@ def adjust_survey_attitude(job, state, order: list[int], scan_records: dict[int,
     progress : Progress
     refine : bool or None
         Run the second, refined adjustment; None: when the first one re-projects at least
-        :data:`REFINE_MIN_SHARE` of the scans.
+        :data:`~clearfast_gis.attitude.placement.REFINE_MIN_SHARE` of the scans.
     reference_scan : int, optional
         The scan the temporal mosaics are co-registered to (tied to every scan in the
         refined adjustment).
@@ -156,7 +106,7 @@ def adjust_survey_attitude(job, state, order: list[int], scan_records: dict[int,
     if unit is None:
         ties = [LinearTie.from_list(v) for s in order
                 for v in (scan_records[s].get("ties") or [])]
-        unit = _fit(ties, order, node_times, prior, times,
+        unit = fit_survey_attitude(ties, order, node_times, prior, times,
                     {s: placement_attitude(scan_records[s], None, times[s]) for s in order})
         state.finish("", unit)
     _rebuild(job, unit, 1, scan_records, attitudes, progress)
@@ -172,7 +122,7 @@ def adjust_survey_attitude(job, state, order: list[int], scan_records: dict[int,
                    if t.ref_scan is None]
         ties = markers + neighbour_ties(job, order, scan_records, model, progress=progress,
                                         reference_scan=reference_scan)
-        refined = _fit(ties, order, node_times, prior, times,
+        refined = fit_survey_attitude(ties, order, node_times, prior, times,
                        {s: placement_attitude(scan_records[s], model, times[s])
                         for s in order})
         state.finish(REFINED, refined)

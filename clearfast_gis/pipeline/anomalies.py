@@ -1,85 +1,30 @@
-"""The anomaly stages of the chain (detection, characterisation, products) and the anomaly
-set they hand to the products writers."""
+"""The anomaly stages of the chain (detection, characterisation, products); the anomaly set
+they hand to the products writers is :class:`clearfast_gis.export.records.AnomalySet`."""
 
 from __future__ import annotations
 
-import dataclasses
 import json
-import math
-from dataclasses import dataclass
-from pathlib import Path
 
 import numpy as np
 
-from clearfast_gis.detection.features import AnomalyFeatures
 from clearfast_gis.detection.likelihood import screen_and_rank
-from clearfast_gis.detection.markers import MarkerMatch, markers_in_mosaics, split_markers
+from clearfast_gis.detection.markers import markers_in_mosaics, split_markers
 from clearfast_gis.detection.voting import detect_on_mosaics
-from clearfast_gis.export.cog import read_mosaic
+from clearfast_gis.export.cog import read_mosaic_stack
 from clearfast_gis.export.manifest import read_products_manifest
-from clearfast_gis.export.records import suspect_records
-from clearfast_gis.parallel import thread_map
+from clearfast_gis.export.products import write_anomaly_products
+from clearfast_gis.export.records import AnomalySet, suspect_records
 from clearfast_gis.pipeline import stages
-from clearfast_gis.pipeline.products import write_anomaly_products
 from clearfast_gis.pipeline.scanjob import scan_part
 from clearfast_gis.pipeline.stages import Characterisation, Detection, RunContext
-from clearfast_gis.pipeline.state import StageState, mosaic_rel
-from clearfast_gis.thermal import Inversion
+from clearfast_gis.pipeline.state import StageState
 from clearfast_gis.thermal.daycontrast import (
     PEAK_LIFT_SIGMA,
     SHOW_SNR,
-    DayContrast,
     contrast_noise_k,
     day_contrast,
 )
 from clearfast_gis.thermal.sitesoil import characterise, site_soil
-
-
-@dataclass
-class AnomalySet:
-    """Detected anomalies of a survey.
-
-    Attributes
-    ----------
-    labels : int32 (H, W)
-        Anomaly label per mosaic cell (0 = background), ids matching ``features``.
-    features : list of AnomalyFeatures
-        Highest score first, at most ``max_anomalies``.
-    inversions : dict[int, Inversion]
-        Thermal characterisation per anomaly id (missing when not attempted).
-    soil_alpha_m2s, soil_alpha_sigma_m2s : float
-        Soil diffusivity from the thermocouples.
-    notes : list of str
-        What the characterisation had to skip, and why.
-    markers : list of MarkerMatch
-        Known markers found among the anomalies (removed from ``features``).
-    day : DayContrast or None
-        How much contrast the day gave (the thermal model of the logs), when characterised.
-    """
-
-    labels: np.ndarray
-    features: list[AnomalyFeatures]
-    inversions: dict[int, Inversion]
-    soil_alpha_m2s: float = math.nan
-    soil_alpha_sigma_m2s: float = math.nan
-    notes: list[str] = dataclasses.field(default_factory=list)
-    markers: list[MarkerMatch] = dataclasses.field(default_factory=list)
-    day: DayContrast | None = None
-
-
-def _load_stack(products: Path, scans: list[int]) -> tuple[np.ndarray, object]:
-    """The scans' mosaics as one float32 (N, B, H, W) array (filled as they are read, on
-    threads that decompress side by side, so that the stack is the only full copy in memory)
-    and the first mosaic's record."""
-    first = read_mosaic(products / mosaic_rel(scans[0]))
-    stack = np.empty((len(scans), *first.bands_c.shape), dtype=np.float32)
-    stack[0] = first.bands_c
-
-    def fill(k: int) -> None:
-        stack[k] = read_mosaic(products / mosaic_rel(scans[k])).bands_c
-
-    thread_map(fill, range(1, len(scans)))
-    return stack, first
 
 
 def _mosaics_digest(mosaics: StageState, scans: list[int]) -> str:
@@ -106,7 +51,7 @@ def detect(c: RunContext) -> Detection:
     o = c.options
     times = np.array([scan_records[s]["time_s"] for s in scans])
     lon = float(read.ctx.survey.manifest["site"]["longitude_deg"])
-    stack, first = _load_stack(c.products, scans)
+    stack, first = read_mosaic_stack(c.products, scans)
     labels, feats = detect_on_mosaics(stack, times, first.transform, read.grid.pixel_size, lon,
                                       o.d1_m, o.d2_m, o.epsilon, o.level, o.gamma,
                                       o.max_anomalies, level_fraction=o.level_fraction,
@@ -151,7 +96,7 @@ def characterise_suspects(c: RunContext) -> Characterisation:
 def write_products(c: RunContext) -> dict:
     """The ``products`` stage: suspect records, anomalies.gpkg, report.html; returns the
     products manifest."""
-    from clearfast_gis.pipeline.inputs import fix_quality_summary
+    from clearfast_gis.geometry.gnss import fix_quality_summary
 
     det, char = c[stages.DETECTION], c[stages.CHARACTERISATION]
     if det.kept is not None:
@@ -160,7 +105,7 @@ def write_products(c: RunContext) -> dict:
     survey = read.ctx.survey
     anomalies = AnomalySet(det.labels, det.features, char.inversions, char.soil_alpha_m2s,
                            char.soil_alpha_sigma_m2s, list(char.notes), det.markers, char.day)
-    fixq = fix_quality_summary(read.ctx)
+    fixq = fix_quality_summary(read.ctx.track, read.ctx.survey.frames.time_s)
     lon = float(survey.manifest["site"]["longitude_deg"])
     records = screen_and_rank(suspect_records(anomalies, det.times_s, lon,
                                               fixq["worst_during_frames"],

@@ -1,38 +1,21 @@
-"""What the chain reads from a survey folder, and the policies it derives from it: the
-survey's CRS, the identity of the inputs, the mosaic cell size, the reference scan, the mosaic
-grid, the surveyed markers, the GNSS fix summary."""
+"""What the chain reads from a survey folder: the validated survey and its logs, the
+platform track, the calibration events, the survey's CRS, the identity of the inputs (the
+mosaic grid, its cell size and the reference scan are chosen in
+:mod:`clearfast_gis.mosaic.survey_grid`; the CRS, the markers and the fix summary in
+:mod:`clearfast_gis.geometry.gnss`)."""
 
 from __future__ import annotations
 
 import json
 from pathlib import Path
 
-import numpy as np
-
 from clearfast_gis import __version__
 from clearfast_gis.errors import InvalidInput
-from clearfast_gis.geometry.gnss import platform_track, smooth_static_track, utm_epsg_for
-from clearfast_gis.geometry.projection import frame_footprint
-from clearfast_gis.mosaic import mosaic_grid
-from clearfast_gis.pipeline.frames import (
-    SurveyContext,
-    frame_pose,
-)
-from clearfast_gis.pipeline.options import ProcessOptions
+from clearfast_gis.geometry.gnss import platform_track, smooth_static_track, survey_epsg
+from clearfast_gis.mosaic.frames import SurveyContext
 from clearfast_gis.progress import NULL_PROGRESS, Progress
-from clearfast_gis.radiometry.stage import calibration_events, weather_at
+from clearfast_gis.radiometry.stage import calibration_events
 from clearfast_gis.registration import ConformalTransform
-
-
-def survey_epsg(survey, gnss) -> int:
-    crs = survey.manifest.get("crs") or {}
-    if crs.get("epsg"):
-        return int(crs["epsg"])
-    ok = gnss.usable
-    if not np.any(ok):
-        raise InvalidInput("no GNSS fix to choose the UTM zone", survey.label("gnss"))
-    i = int(np.flatnonzero(ok)[0])
-    return utm_epsg_for(float(gnss.lat_deg[i]), float(gnss.lon_deg[i]))
 
 
 def input_key(survey, station_profile: str | Path | None = None) -> str:
@@ -55,23 +38,6 @@ def input_key(survey, station_profile: str | Path | None = None) -> str:
         h.update(survey.path("station_profile").read_bytes())
     h.update(__version__.encode())
     return h.hexdigest()[:20]
-
-
-MIN_DEFAULT_PIXEL_M = 0.02
-"""Finest default mosaic cell, metres: five cells across the smallest AP mine (10.4 cm)."""
-
-
-def pixel_size(survey, options: ProcessOptions) -> float:
-    """Mosaic cell size: the option, else the mission's mean across-track ground resolution,
-    not finer than :data:`MIN_DEFAULT_PIXEL_M` (finer cells cost memory and time without
-    helping the detection of mines; frames are low-pass filtered to the cell size)."""
-    if options.pixel_size_m:
-        return float(options.pixel_size_m)
-    res = survey.mission.get("ground_resolution_m") or {}
-    lo, hi = res.get("across_min"), res.get("across_max")
-    if lo and hi:
-        return max(MIN_DEFAULT_PIXEL_M, round(0.5 * (float(lo) + float(hi)), 3))
-    return MIN_DEFAULT_PIXEL_M
 
 
 def open_context(survey_path: str | Path, progress: Progress = NULL_PROGRESS,
@@ -114,69 +80,3 @@ def open_context(survey_path: str | Path, progress: Progress = NULL_PROGRESS,
     ctx = SurveyContext(survey, survey.camera, track, events, weather,
                         [ConformalTransform.identity()] * len(survey.bands))
     return ctx, epsg, report
-
-
-def reference_scan(survey, options: ProcessOptions) -> int:
-    """The reference scan: the option, or the scan nearest local solar noon."""
-    if options.reference_scan is not None:
-        return int(options.reference_scan)
-    from clearfast_gis.thermal import sun_times
-
-    site = survey.manifest["site"]
-    scans = sorted(int(s) for s in survey.scans)
-    times = np.array([scan_time(survey, s)[1] for s in scans])
-    noon = np.array([sun_times(float(site["latitude_deg"]), float(site["longitude_deg"]),
-                               float(t))[1] for t in times])
-    return scans[int(np.argmin(np.abs(times - noon)))]
-
-
-def mosaic_grid_for(ctx: SurveyContext, epsg: int, pixel_size_m: float, reference: int):
-    survey = ctx.survey
-    fr = survey.frames
-    rows = survey.scan_rows(reference, 0)
-    fps = [frame_footprint(ctx.camera, frame_pose(ctx, fr.time_s[i], fr.pan_deg[i],
-                                                  fr.tilt_deg[i]), max_range_m=60.0)
-           for i in rows]
-    area = survey.mission.get("area")
-    clip = None
-    if area and len(area) == 4:
-        xmin, ymin, xmax, ymax = (float(a) for a in area)
-        margin = 1.0
-        clip = (xmin - margin, ymin - margin, xmax + margin, ymax + margin)
-        import shapely
-
-        if not shapely.box(*clip).intersects(shapely.unary_union(fps)):
-            clip = None
-    return mosaic_grid(fps, pixel_size_m, epsg, clip_to=clip)
-
-
-def air_function(ctx: SurveyContext):
-    label = ctx.survey.label("weather")
-    return lambda t: weather_at(ctx.weather, t, source=label)
-
-
-def survey_markers(markers, epsg: int) -> tuple[list[str], np.ndarray]:
-    """Surveyed markers (``Markers`` or None) in the survey CRS: ids and (M, 2) positions."""
-    from clearfast_gis.geometry.gnss import lonlat_to_crs
-
-    if markers is None:
-        return [], np.zeros((0, 2))
-    m = markers
-    x, y = lonlat_to_crs(np.asarray(m.lon_deg, float), np.asarray(m.lat_deg, float), epsg)
-    return [str(i) for i in m.id], np.column_stack([x, y])
-
-
-def fix_quality_summary(ctx: SurveyContext) -> dict:
-    t = ctx.survey.frames.time_s
-    q = ctx.track.fix_quality_at(t)
-    values, counts = np.unique(q, return_counts=True)
-    return {"counts_at_frames": {str(int(v)): int(c) for v, c in zip(values, counts,
-                                                                        strict=True)},
-            "rtk_fixed_share": float(np.mean(q == 4)) if q.size else 0.0,
-            "worst_during_frames": int(q.min()) if q.size else None,
-            "degraded": bool(np.any(q != 4))}
-
-
-def scan_time(survey, scan: int) -> tuple[float, float]:
-    t = survey.frames.time_s[survey.frames.scan == scan]
-    return float(t.min()), float(t.mean())

@@ -13,9 +13,9 @@ from clearfast_gis.export.manifest import read_products_manifest, write_products
 from clearfast_gis.parallel import serial_kernels
 from clearfast_gis.pipeline import stages
 from clearfast_gis.pipeline.options import MOSAIC_PARAMETERS, ProcessOptions
-from clearfast_gis.pipeline.resources import StageMeter, cpu_seconds
 from clearfast_gis.pipeline.stages import STAGES, RunContext, stage_index
 from clearfast_gis.progress import NULL_PROGRESS, Progress
+from clearfast_gis.resources import StageMeter, cpu_seconds
 
 
 def process_survey(survey_path: str | Path, products: str | Path,
@@ -78,7 +78,7 @@ def _run(c: RunContext, first: int | None, last: int) -> dict:
             if first is not None and k == max(first, 1):
                 for later in STAGES[k:]:
                     c.state.drop(later.name)
-            with c.meter.stage(stage.name):
+            with c.meter.stage(stage.name), c.progress.chain_stage(stage.name, stage.label):
                 c.records[stage.name] = stage.run(c)
     finally:
         if c.job is not None:
@@ -87,12 +87,13 @@ def _run(c: RunContext, first: int | None, last: int) -> dict:
     if stages.PRODUCTS in c.records:
         manifest = c[stages.PRODUCTS].manifest
     else:
-        from clearfast_gis.pipeline.inputs import fix_quality_summary
-        from clearfast_gis.pipeline.products import base_manifest
+        from clearfast_gis.export.products import base_manifest
+        from clearfast_gis.geometry.gnss import fix_quality_summary
 
         manifest = base_manifest(read.ctx.survey, read.epsg, c.options,
                                  c[stages.MOSAICS].scan_records if stages.MOSAICS in c.records
-                                 else {}, fix_quality_summary(read.ctx))
+                                 else {}, fix_quality_summary(read.ctx.track,
+                                                             read.ctx.survey.frames.time_s))
         manifest["products"] = {"mosaics": "mosaics/", "footprint": "footprint.geojson"}
     adjustment = c.records.get(stages.ADJUSTMENT)
     manifest["attitude_adjustment"] = None if adjustment is None else adjustment.summary

@@ -4,7 +4,8 @@ Each :class:`Stage` names itself, the :class:`~clearfast_gis.pipeline.options.Pr
 fields it depends on and the products it writes, and runs as ``run(context) -> record``, a
 frozen dataclass kept in the :class:`RunContext` for the stages after it. One name per stage
 serves the resource meter (``products.json`` ``timings_s`` and ``resources``), the run state
-(its units are ``STAGE`` or ``STAGE/PART``) and ``clearfast process --from/--until``.
+(its units are ``STAGE`` or ``STAGE/PART``), the progress (bar and JSON lines, with the
+stage's human label beside it) and ``clearfast process --from/--until``.
 
 A stage's key chains the key of the stage before it with its own options, so changing a
 detector parameter keeps the mosaics, while changing a mosaic parameter redoes everything
@@ -23,9 +24,9 @@ from pathlib import Path
 import numpy as np
 
 from clearfast_gis.pipeline.options import ProcessOptions
-from clearfast_gis.pipeline.resources import StageMeter
 from clearfast_gis.pipeline.state import RunState, StageState
 from clearfast_gis.progress import Progress
+from clearfast_gis.resources import StageMeter
 
 
 @dataclass
@@ -85,7 +86,9 @@ class Stage:
     Attributes
     ----------
     name : str
-        Used by the meter, the run state, ``--from`` and ``--until``.
+        Used by the meter, the run state, the progress lines, ``--from`` and ``--until``.
+    label : str
+        What the stage does, for people (shown beside the name by the progress).
     options : tuple of str
         ProcessOptions fields the stage's result depends on.
     outputs : tuple of str
@@ -95,6 +98,7 @@ class Stage:
     """
 
     name: str
+    label: str
     options: tuple[str, ...]
     outputs: tuple[str, ...]
     run: Callable[[RunContext], object]
@@ -219,6 +223,8 @@ class Products:
 # -- stages --------------------------------------------------------------------------------
 
 def _read(c: RunContext) -> SurveyRead:
+    from clearfast_gis.geometry.gnss import survey_markers
+    from clearfast_gis.mosaic.survey_grid import mosaic_grid_for, pixel_size, reference_scan
     from clearfast_gis.pipeline import inputs
 
     ctx, epsg, report = inputs.open_context(c.survey_path, c.progress, c.station_profile)
@@ -227,11 +233,10 @@ def _read(c: RunContext) -> SurveyRead:
     c.state = RunState(c.products, key)
     if c.fresh:
         c.state.units = {}
-    ref = inputs.reference_scan(survey, c.options)
-    ids, xy = inputs.survey_markers(report.logs.markers, epsg)
+    ref = reference_scan(survey, c.options.reference_scan)
+    ids, xy = survey_markers(report.logs.markers, epsg)
     return SurveyRead(ctx, epsg, report, ref, tuple(sorted(int(x) for x in survey.scans)),
-                      inputs.mosaic_grid_for(ctx, epsg, inputs.pixel_size(survey, c.options),
-                                             ref),
+                      mosaic_grid_for(ctx, epsg, pixel_size(survey, c.options.pixel_size_m), ref),
                       tuple(ids), xy)
 
 
@@ -245,8 +250,9 @@ def _bands(c: RunContext) -> BandOffsets:
 
 
 def _mosaics(c: RunContext) -> ScanMosaics:
+    from clearfast_gis.mosaic.scanjob import scan_mosaics
     from clearfast_gis.pipeline.adjustment import stored_model
-    from clearfast_gis.pipeline.scanjob import scan_job, scan_mosaics
+    from clearfast_gis.pipeline.scanjob import scan_job
 
     read = c[READ]
     c.job = scan_job(c, read, c.stage_state(MOSAICS))
@@ -267,8 +273,8 @@ def _adjustment(c: RunContext) -> AttitudeAdjustment:
 
 
 def _footprint(c: RunContext) -> Footprint:
-    from clearfast_gis.pipeline.products import write_footprint_geojson
-    from clearfast_gis.pipeline.scanjob import temporal_residuals
+    from clearfast_gis.export.products import write_footprint_geojson
+    from clearfast_gis.mosaic.temporal import temporal_residuals
 
     c.job.close()
     read = c[READ]
@@ -306,17 +312,22 @@ _MOSAIC_OPTIONS = ("pixel_size_m", "coregister", "search_m", "attitude_samples",
                    "seam_balance", "atmosphere")
 
 STAGES: tuple[Stage, ...] = (
-    Stage(READ, (), (), _read),
-    Stage(BANDS, ("reference_scan", "kernels"), (), _bands),
+    Stage(READ, "read and validate the survey folder", (), (), _read),
+    Stage(BANDS, "filter-wheel band offsets", ("reference_scan", "kernels"), (), _bands),
     # the scans re-projected by the adjustment are mosaic units: both depend on all the
     # mosaic parameters (turning the adjustment off must redo the mosaics it moved)
-    Stage(MOSAICS, _MOSAIC_OPTIONS, ("mosaics/",), _mosaics),
-    Stage(ADJUSTMENT, (), ("mosaics/",), _adjustment),
-    Stage(FOOTPRINT, (), ("footprint.geojson",), _footprint),
-    Stage(DETECTION, ("d1_m", "d2_m", "epsilon", "threshold_snr", "level", "level_fraction",
-                      "gamma", "gamma_fraction", "max_anomalies"), (), _detection),
-    Stage(CHARACTERISATION, ("invert",), (), _characterisation),
-    Stage(PRODUCTS, (), ("anomalies.gpkg", "report.html", "figures/"), _products),
+    Stage(MOSAICS, "one mosaic per scan, attitude fitted", _MOSAIC_OPTIONS, ("mosaics/",),
+          _mosaics),
+    Stage(ADJUSTMENT, "survey-wide attitude adjustment", (), ("mosaics/",), _adjustment),
+    Stage(FOOTPRINT, "temporal residuals and footprint", (), ("footprint.geojson",),
+          _footprint),
+    Stage(DETECTION, "anomaly detection on the mosaics",
+          ("d1_m", "d2_m", "epsilon", "threshold_snr", "level", "level_fraction", "gamma",
+           "gamma_fraction", "max_anomalies"), (), _detection),
+    Stage(CHARACTERISATION, "depth and diffusivity of the suspects", ("invert",), (),
+          _characterisation),
+    Stage(PRODUCTS, "GeoPackage, figures, report", (),
+          ("anomalies.gpkg", "report.html", "figures/"), _products),
 )
 """The chain, in order."""
 

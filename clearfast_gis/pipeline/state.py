@@ -19,50 +19,15 @@ Opening the state also
 
 from __future__ import annotations
 
-import contextlib
 import fcntl
 import json
 import os
 from pathlib import Path
 
-from clearfast_gis.atomic import _describe_os_error, write_text
+from clearfast_gis.atomic import _describe_os_error, remove_temporaries, write_text
 from clearfast_gis.errors import OutputError
+from clearfast_gis.export.layout import STATE_DIR
 from clearfast_gis.export.manifest import sha256_file
-
-STATE_DIR = ".clearfast"
-"""Folder of the run state (and the scans' source maps) inside a products folder."""
-
-
-def mosaic_rel(scan: int) -> str:
-    """Relative path of a scan's mosaic in the products folder.
-
-    >>> mosaic_rel(7)
-    'mosaics/scan_007.tif'
-    """
-    return f"mosaics/scan_{scan:03d}.tif"
-
-
-def source_rel(scan: int) -> str:
-    """Relative path of a scan's source map (scan-pattern position seen in each cell)."""
-    return f"{STATE_DIR}/source_{scan:03d}.npy"
-
-
-def is_temporary(name: str) -> bool:
-    """Whether a file name is one of :func:`clearfast_gis.atomic.atomic_path`'s temporaries."""
-    return name.startswith(".") and (name.endswith(".part") or ".part." in name)
-
-
-def remove_temporaries(folder: str | os.PathLike) -> list[Path]:
-    """Delete the atomic writers' temporary files under ``folder``; return what was removed."""
-    removed = []
-    for dirpath, _dirs, names in os.walk(folder):
-        for name in names:
-            if is_temporary(name):
-                p = Path(dirpath) / name
-                with contextlib.suppress(FileNotFoundError):
-                    p.unlink()
-                    removed.append(p)
-    return removed
 
 
 class RunState:

@@ -21,7 +21,6 @@ from numpy.typing import ArrayLike
 from clearfast_gis import kernels
 from clearfast_gis.errors import InvalidInput
 from clearfast_gis.progress import NULL_PROGRESS, Progress
-from clearfast_gis.radiometry.apparent import raw_to_apparent
 from clearfast_gis.radiometry.atmosphere import (
     LW_WINDOW_UM,
     atmospheric_transmittance,
@@ -32,11 +31,9 @@ from clearfast_gis.radiometry.calibration import (
     CalibrationEvent,
     GainOffset,
     blackbody_temperature_at,
-    blend_gain_offsets,
     select_events_many,
 )
 from clearfast_gis.radiometry.camera import CameraRadiometry
-from clearfast_gis.radiometry.fused import apparent_frame
 from clearfast_gis.radiometry.table import BandTable
 from clearfast_gis.radiometry.timeseries import interpolate_log
 from clearfast_gis.units import c_to_k
@@ -329,18 +326,3 @@ def apparent_temperature_scan(
         progress=progress)
 
 
-def _apparent_fused(raw: np.ndarray, parts: list, tau, t_air_k: float, b_air: float, table,
-                    out: np.ndarray) -> None:
-    """One frame's apparent temperature (kelvin) into ``out`` on the fast kernels:
-    calibration (``parts``: weighted gain/offset of the calibration events), atmosphere
-    (transmittance ``tau``, scalar or (H, W); air radiance ``b_air``) and inverse Planck fused
-    per pixel (:func:`clearfast_gis.radiometry.fused.apparent_frame`)."""
-    tau_map = np.broadcast_to(np.asarray(tau, dtype=np.float32), raw.shape)
-    apparent_frame(raw, parts, tau_map, b_air, table, out)
-
-
-def _apparent_reference(raw: np.ndarray, parts: list, tau, t_air_k: float, b_air: float,
-                        table, out: np.ndarray) -> None:
-    """The same on the reference kernels, step by step (:func:`raw_to_apparent`, air
-    temperature ``t_air_k``)."""
-    out[...] = raw_to_apparent(raw, blend_gain_offsets(parts), tau, t_air_k, table)

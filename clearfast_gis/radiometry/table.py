@@ -11,58 +11,24 @@
   ``max_error_k`` (default 1 mK).
 
 :func:`apparent_temperature_paper` is the paper's own scheme (radiances at 0.1 K steps, the two
-nearest points, linear interpolation), kept as the reference path.
+nearest points, linear interpolation), kept as the reference path. The compiled table look-ups
+are in :mod:`clearfast_gis.radiometry._kernels`, the reference in
+:mod:`clearfast_gis.radiometry._reference`.
 """
 
 from __future__ import annotations
 
-import numba
 import numpy as np
 from numpy.typing import ArrayLike
 
 from clearfast_gis import kernels
 from clearfast_gis.errors import InvalidInput
+from clearfast_gis.radiometry._kernels import _uniform_hermite
 from clearfast_gis.radiometry.planck import (
     band_radiance,
     band_radiance_derivative,
     band_temperature,
 )
-
-
-@numba.njit(cache=True, nogil=True)
-def _uniform_linear(x, x0, inv_dx, y, out):
-    """out[i] = y interpolated linearly at x[i] on the uniform grid x0 + k / inv_dx; NaN
-    outside the grid or for NaN input."""
-    n = y.size - 1
-    for i in range(x.size):
-        s = (np.float64(x[i]) - x0) * inv_dx
-        if s >= 0.0 and s <= n:
-            j = min(int(s), n - 1)
-            f = s - j
-            out[i] = y[j] + f * (y[j + 1] - y[j])
-        else:
-            out[i] = np.nan
-
-
-@numba.njit(cache=True, nogil=True)
-def _uniform_hermite(x, x0, dx, y, dy, out):
-    """Cubic Hermite interpolation of (y, dy/dx) on a uniform grid; NaN outside."""
-    n = y.size - 1
-    inv_dx = 1.0 / dx
-    for i in range(x.size):
-        s = (np.float64(x[i]) - x0) * inv_dx
-        if s >= 0.0 and s <= n:
-            j = min(int(s), n - 1)
-            t = s - j
-            t2 = t * t
-            t3 = t2 * t
-            h00 = 2.0 * t3 - 3.0 * t2 + 1.0
-            h10 = t3 - 2.0 * t2 + t
-            h01 = -2.0 * t3 + 3.0 * t2
-            h11 = t3 - t2
-            out[i] = h00 * y[j] + h10 * dx * dy[j] + h01 * y[j + 1] + h11 * dx * dy[j + 1]
-        else:
-            out[i] = np.nan
 
 
 class BandTable:
@@ -250,17 +216,3 @@ def apparent_temperature_paper(
                      left=np.nan, right=np.nan)
 
 
-def _temperature_uniform(table: BandTable, r: np.ndarray, dtype=np.float32) -> np.ndarray:
-    """:meth:`BandTable.temperature` on the fast kernels (radiance-uniform table, numba)."""
-    if r.dtype not in (np.float32, np.float64):
-        r = r.astype(np.float64)
-    flat = np.ascontiguousarray(r).ravel()
-    out = np.empty(flat.shape, dtype=dtype)
-    _uniform_linear(flat, table.inverse_radiance0, 1.0 / table.inverse_step,
-                    table.inverse_t_k, out)
-    return out.reshape(r.shape)
-
-
-def _temperature_paper(table: BandTable, r: np.ndarray, dtype=np.float32) -> np.ndarray:
-    """:meth:`BandTable.temperature` on the reference kernels (the paper's 0.1 K table)."""
-    return apparent_temperature_paper(r, table).astype(dtype)

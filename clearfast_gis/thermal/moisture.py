@@ -19,7 +19,7 @@ The surface layer's volumetric water content follows the force-restore equation 
 
 with ``E = LE / L_v`` (kg m-2 s-1), ``P`` the rain rate, ``d1 = 0.1 m``, ``tau = 1 day``,
 ``C1 = 0.5``, ``C2 = 0.9``; theta is kept between 0 and saturation (the rest runs off). The
-heat solver (:func:`clearfast_gis.thermal.banded.march`) integrates it step by step with the
+heat solver (:func:`clearfast_gis.thermal._kernels.march`) integrates it step by step with the
 surface temperature; the functions here are its reference and the documentation's.
 """
 

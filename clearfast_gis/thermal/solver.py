@@ -11,9 +11,9 @@ L-stable), started as if the state before the first step equalled the initial st
 
 In the natural cell order (``iz * Nr + ir``) the matrix is a band of half-bandwidth ``Nr``.
 The fast kernels factor it by band Cholesky and run the whole time loop compiled, with the
-GIL released (:mod:`clearfast_gis.thermal.banded`); ``--kernels reference`` factors it by
-scipy's sparse LU and steps in Python. Both build the matrix from one conductance network
-(:func:`_network`) and agree to ~1e-11 K.
+GIL released (:mod:`clearfast_gis.thermal._kernels`); ``--kernels reference`` factors it by
+scipy's sparse LU and steps in Python (:mod:`clearfast_gis.thermal._reference`). Both build
+the matrix from one conductance network (:func:`_network`) and agree to ~1e-11 K.
 """
 
 from __future__ import annotations
@@ -22,12 +22,9 @@ from dataclasses import dataclass
 
 import numpy as np
 import scipy.sparse as sp
-from scipy.sparse.linalg import splu
 
 from clearfast_gis import kernels
-from clearfast_gis.thermal import banded
 from clearfast_gis.thermal.moisture import SurfaceWater
-from clearfast_gis.units import STEFAN_BOLTZMANN
 
 
 @dataclass(frozen=True)
@@ -219,7 +216,7 @@ def _band(net: _Network, diag_add: np.ndarray) -> np.ndarray:
     Returns
     -------
     ndarray, shape (Nz * Nr, Nr + 1)
-        ``band[j, d] = A[j + d, j]`` (:mod:`clearfast_gis.thermal.banded` storage).
+        ``band[j, d] = A[j + d, j]`` (:mod:`clearfast_gis.thermal._kernels` storage).
     """
     nr = net.idx.shape[1]
     band = np.zeros((net.diag.size, nr + 1))
@@ -310,39 +307,6 @@ def _initial(init_k, init_prev_k, surface_init_k, top):
     return t_now, t_prev, ts_now, ts_prev
 
 
-def _run_band(z_faces, r_faces, props, drive, dt_s, init_k, init_prev_k, surface_init_k,
-              keep_states, keep_profiles) -> SolverResult:
-    """:func:`run` on a band Cholesky factor with the time loop compiled (GIL released)."""
-    nz, nr = z_faces.size - 1, r_faces.size - 1
-    net = _network(z_faces, r_faces, props)
-    h = float(drive.h_ref_wm2k)
-    c_dt, diag_add, q_gain, ts_gain = _step_terms(net.cap, net.ring, net.k0, net.idx[0], h,
-                                                  dt_s)
-    packed = banded.pack(banded.cholesky(_band(net, diag_add)))
-    n_steps = drive.flux_wm2.size - 1
-    t_now, t_prev, ts_now, ts_prev = _initial(init_k, init_prev_k, surface_init_k, net.idx[0])
-    keep = set(keep_states)
-    steps = [n for n in range(n_steps + 1) if n in keep]
-    mask = np.zeros(n_steps + 1, dtype=np.bool_)
-    mask[steps] = True
-    kept = np.empty((len(steps), nz * nr))
-    surface = np.empty((n_steps + 1, nr))
-    profiles = np.empty((n_steps + 1 if keep_profiles else 0, nz * nr))
-
-    def f64(a):
-        return np.ascontiguousarray(a, dtype=np.float64)
-
-    lat, water, theta, theta_out = _latent_arrays(drive, dt_s, nr)
-    banded.march(packed, c_dt, f64(q_gain), f64(net.k0), f64(ts_gain), f64(net.g_bottom), h,
-                 float(drive.emissivity * STEFAN_BOLTZMANN), f64(drive.flux_wm2),
-                 f64(drive.hc_wm2k), f64(drive.bottom_k), t_now, f64(t_prev), f64(ts_now),
-                 f64(ts_prev), mask, surface, kept, profiles, *lat, water, theta, theta_out)
-    states = {n: kept[i].reshape(nz, nr) for i, n in enumerate(steps)}
-    return SolverResult(surface, states,
-                        profiles.reshape(n_steps + 1, nz, nr) if keep_profiles else None,
-                        theta_out if drive.latent is not None else None)
-
-
 def _latent_arrays(drive: SurfaceDrive, dt_s: float, nr: int):
     """The kernel's latent-heat arguments: (coef, e_air, rain), water parameters, the surface
     water at step 0 (Nr,) and the (N + 1, Nr) output; empty arrays without latent heat."""
@@ -358,56 +322,3 @@ def _latent_arrays(drive: SurfaceDrive, dt_s: float, nr: int):
     return arrays, water, theta.copy(), np.empty((n, nr))
 
 
-def _run_splu(z_faces, r_faces, props, drive, dt_s, init_k, init_prev_k, surface_init_k,
-              keep_states, keep_profiles) -> SolverResult:
-    """:func:`run` by a sparse LU factorisation and a Python time loop (the reference of
-    ``--kernels reference``, which the band path is checked against)."""
-    nz, nr = z_faces.size - 1, r_faces.size - 1
-    mat, cap, ring, k0, g_bottom, idx = _assemble(z_faces, r_faces, props)
-    h = drive.h_ref_wm2k
-    top = idx[0]
-    bottom = idx[-1]
-    c_dt, diag_add, q_gain, ts_gain = _step_terms(cap, ring, k0, top, h, dt_s)
-    system = mat + sp.diags(diag_add)
-    lu = splu(system.tocsc())
-    n_steps = drive.flux_wm2.size - 1
-    eps_sigma = drive.emissivity * STEFAN_BOLTZMANN
-
-    t_now, t_prev, ts_now, ts_prev = _initial(init_k, init_prev_k, surface_init_k, top)
-    surface = np.empty((n_steps + 1, nr))
-    surface[0] = ts_now
-    keep = set(keep_states)
-    states: dict[int, np.ndarray] = {}
-    if 0 in keep:
-        states[0] = t_now.reshape(nz, nr).copy()
-    profiles = np.empty((n_steps + 1, nz, nr)) if keep_profiles else None
-    if profiles is not None:
-        profiles[0] = t_now.reshape(nz, nr)
-    rhs_base = np.empty(nz * nr)
-    flux, hc, tb = drive.flux_wm2, drive.hc_wm2k, drive.bottom_k
-    lat, water, theta, theta_out = _latent_arrays(drive, dt_s, nr)
-    if drive.latent is not None:
-        theta_out[0] = theta
-    for n in range(1, n_steps + 1):
-        tp = 2.0 * ts_now - ts_prev
-        tp3 = tp * tp * tp
-        hp = 4.0 * eps_sigma * tp3 + hc[n]
-        q = flux[n] + 3.0 * eps_sigma * tp3 * tp - (hp - h) * tp
-        if drive.latent is not None:
-            q = q - np.array([banded._latent_step(tp[i], i, n, *lat, water, theta)
-                              for i in range(nr)])
-            theta_out[n] = theta
-        np.multiply(c_dt, 2.0 * t_now - 0.5 * t_prev, out=rhs_base)
-        rhs_base[top] += q_gain * q
-        rhs_base[bottom] += g_bottom * tb[n]
-        t_new = lu.solve(rhs_base)
-        ts_prev = ts_now
-        ts_now = (q + k0 * t_new[top]) * ts_gain
-        t_prev, t_now = t_now, t_new
-        surface[n] = ts_now
-        if n in keep:
-            states[n] = t_now.reshape(nz, nr).copy()
-        if profiles is not None:
-            profiles[n] = t_now.reshape(nz, nr)
-    return SolverResult(surface, states, profiles,
-                        theta_out if drive.latent is not None else None)

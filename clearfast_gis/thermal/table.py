@@ -28,6 +28,11 @@ DEFAULT_HEIGHT_M = 0.08
 8 cm, AT M6A2 9.4 cm). A 5 cm object fitted to an 8 cm mine's contrast puts it 0.3-0.5 cm
 too deep (BENCHMARKS.md, "Depth bias")."""
 
+CENTRES = ("axis", "disc")
+"""What the table's contrast is taken over: the surface on the object's axis, or the mean over
+the disc of the object's radius (what the chain measures: the mean over the half-maximum
+footprint, whose radius is the table's)."""
+
 OBJECT_RHO_C_JM3K = MATERIALS["tnt"].rho_c_jm3k
 """Volumetric heat capacity assumed for the object, J m-3 K-1. Solids span only 1.3-3.6e6
 while conductivity spans 0.2-240 W/m/K, so the object is parametrised by its diffusivity at
@@ -55,11 +60,14 @@ class SiteTable:
     time_s : ndarray, shape (Tg,)
         Model step times covering the scans, UTC epoch seconds.
     contrast_k : ndarray, shape (Q, Nd, Na, Tg)
-        Surface temperature on the object's axis minus the undisturbed surface, K.
+        Surface temperature on the object's axis (``centre`` "axis") or its mean over the
+        disc of the object's radius ("disc"), minus the undisturbed surface, K.
     background_k : ndarray, shape (Tg,)
         Modelled undisturbed surface temperature, K.
     height_m, object_rho_c_jm3k : float
         Object height and assumed volumetric heat capacity.
+    centre : str
+        One of :data:`CENTRES`.
     """
 
     radii_m: np.ndarray
@@ -70,6 +78,7 @@ class SiteTable:
     background_k: np.ndarray
     height_m: float
     object_rho_c_jm3k: float
+    centre: str = "axis"
 
     def contrast_for(self, radius_m: float, time_s: ArrayLike) -> np.ndarray:
         """Table contrast at ``radius_m`` and ``time_s``, shape (Nd, Na, S), K.
@@ -118,6 +127,7 @@ def build_site_table(
     dt_s: float = 600.0,
     bottom: Bottom = None,
     progress: Progress | None = None,
+    centre: str = "axis",
 ) -> SiteTable:
     """Run the forward model over a grid of depths and diffusivities for one site.
 
@@ -148,6 +158,9 @@ def build_site_table(
         Bottom boundary.
     progress : Progress, optional
         Advanced once per forward run.
+    centre : str
+        "axis": the surface on the object's axis; "disc": its area-weighted mean over the
+        disc of the object's radius (:data:`CENTRES`).
 
     Returns
     -------
@@ -158,6 +171,8 @@ def build_site_table(
     la = np.asarray(log10_alpha, dtype=float)
     if np.any(radii <= 0):
         raise InvalidInput("radius must be positive", field="radius_m")
+    if centre not in CENTRES:
+        raise InvalidInput(f"centre must be one of {CENTRES}, got {centre!r}", field="centre")
     for name, arr in (("depths_m", depths), ("log10_alpha", la)):
         if arr.ndim != 1 or arr.size < 4 or np.any(np.diff(arr) <= 0):
             raise InvalidInput("need >= 4 increasing nodes", field=name)
@@ -171,20 +186,34 @@ def build_site_table(
         model = ObjectModel(soil, forcing, span, float(radius), dt_s=dt_s, bottom=bottom)
         first = model.setup.first_out - model.start
         bg_steps = model.column.surface_k[model.setup.first_out:, 0]
+        weights = disc_weights(model.r_faces, float(radius) if centre == "disc" else 0.0)
         if contrast is None:
             t_grid = model.setup.t[model.setup.first_out:]
             contrast = np.empty((radii.size, depths.size, la.size, t_grid.size))
             background = bg_steps
-        def centre_series(ij: tuple[int, int], model=model, radius=radius, first=first):
+        def centre_series(ij: tuple[int, int], model=model, radius=radius, first=first,
+                          weights=weights):
             obj = BuriedObject(float(radius), height_m, float(depths[ij[0]]),
                                object_material(10.0 ** la[ij[1]], object_rho_c_jm3k))
-            series = model.surface_steps(obj)[first:, 0]
+            series = model.surface_steps(obj)[first:] @ weights
             if progress is not None:
                 progress.advance(1)
             return series
 
         cells = [(i, j) for i in range(depths.size) for j in range(la.size)]
-        for (i, j), centre in zip(cells, thread_map(centre_series, cells), strict=True):
-            contrast[q, i, j] = centre - bg_steps
+        for (i, j), series in zip(cells, thread_map(centre_series, cells), strict=True):
+            contrast[q, i, j] = series - bg_steps
     return SiteTable(radii, depths, la, t_grid, contrast, background, height_m,
-                     object_rho_c_jm3k)
+                     object_rho_c_jm3k, centre)
+
+
+def disc_weights(r_faces: np.ndarray, radius_m: float) -> np.ndarray:
+    """Area weights (Nr,) of the radial cells for the mean over the disc of ``radius_m``
+    (m; 0: the axis cell alone), summing to 1."""
+    if radius_m <= 0:
+        w = np.zeros(r_faces.size - 1)
+        w[0] = 1.0
+        return w
+    f = np.minimum(r_faces, radius_m)
+    area = f[1:] ** 2 - f[:-1] ** 2
+    return area / area.sum()

@@ -145,9 +145,13 @@ def handle_line(line: str, feedback, events: list) -> None:
         return
     events.append(obj)
     event = obj.get("event")
+    if event == "stage":  # a stage of the processing chain begins: its name and label
+        feedback.setProgressText(f"{obj.get('stage', '')}: {obj.get('label', '')}")
+        feedback.pushInfo(f"{obj.get('stage', '')}: {obj.get('label', '')}")
     if event == "start":
-        feedback.setProgressText(f"{obj.get('stage', '')}")
-        feedback.pushInfo(f"{obj.get('stage', '')}: {obj.get('total', '?')} steps")
+        what = " / ".join(str(obj[k]) for k in ("stage", "step") if obj.get(k))
+        feedback.setProgressText(what)
+        feedback.pushInfo(f"{what}: {obj.get('total', '?')} steps")
     if event in ("start", "progress", "end") and isinstance(obj.get("fraction"), (int, float)):
         feedback.setProgress(max(0.0, min(100.0, 100.0 * float(obj["fraction"]))))
     elif event == "message":

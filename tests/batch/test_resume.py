@@ -22,8 +22,9 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from clearfast_gis.atomic import is_temporary
 from clearfast_gis.cli.main import cli
-from clearfast_gis.pipeline.state import is_temporary
+from clearfast_gis.pipeline.stages import STAGE_NAMES, STAGES
 from clearfast_gis.survey.testing import make_minimal_survey
 from tests.product_digests import comparable_digests, product_files
 
@@ -146,6 +147,12 @@ def test_sigkill_at_any_stage_then_resume_gives_identical_products(kill_survey, 
     events = [json.loads(s) for s in run.stdout.splitlines()]
     resumed = {e["scan"] for e in events if e.get("stage") == "mosaics" and e.get("resumed")}
     assert resumed == set(range(N_SCANS)), "all scans were finished before the last restart"
+    # the progress speaks of the chain's stages by their one set of names
+    # (every line but the command's closing "done" summary)
+    chain = events[:-1]
+    assert events[-1]["event"] == "done"
+    assert [e["stage"] for e in chain if e["event"] == "stage"] == list(STAGE_NAMES)
+    assert {e["stage"]: e["label"] for e in chain} == {s.name: s.label for s in STAGES}
     assert comparable_digests(products) == want
     for u, ns in stamps.items():  # the scans finished before the first kill were not redone
         assert os.stat(products / f"{u}.tif").st_mtime_ns == ns

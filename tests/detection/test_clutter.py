@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from scipy import ndimage
 
 from clearfast_gis.detection.clutter import background_clutter_k
 
@@ -27,3 +28,24 @@ def test_anomalies_and_outside_cells_are_left_out():
     est = background_clutter_k(img[None], labels, 0.02)
     assert est == pytest.approx(0.05, rel=0.15)
     assert np.isnan(background_clutter_k(np.full((2, 10, 10), np.nan), labels[:10, :10], 0.02))
+
+
+def test_the_same_on_one_thread_as_on_several(monkeypatch):
+    """The scans are measured on threads and combined in scan order: the bits do not depend
+    on the thread count."""
+    rng = np.random.default_rng(2)
+    stack = rng.standard_normal((6, 90, 110)).astype(np.float32)
+    stack[2, :, :30] = np.nan
+    stack[4] = np.nan  # a scan that saw nothing
+    labels = np.zeros(stack.shape[1:], int)
+    labels[20:40, 50:70] = 3
+    monkeypatch.setenv("CLEARFAST_THREADS", "1")
+    one = background_clutter_k(stack, labels, 0.02)
+    monkeypatch.setenv("CLEARFAST_THREADS", "3")
+    assert background_clutter_k(stack, labels, 0.02) == one
+    reference = np.median([1.4826 * np.median(np.abs(v - np.median(v))) for v in (
+        (s - ndimage.uniform_filter(np.where(np.isfinite(s), s, np.nanmedian(s)), size=15,
+                                        mode="nearest"))[
+            np.isfinite(s) & (labels == 0)] for s in stack.astype(np.float64)
+        if np.isfinite(s).any())])
+    assert one == reference

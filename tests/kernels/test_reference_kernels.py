@@ -101,7 +101,7 @@ def test_simpleitk_registration_in_the_chain_is_the_same_bits_every_time():
 
 
 def test_sitk_transform_conversion_round_trip():
-    from clearfast_gis.registration.reference import _from_sitk, _to_sitk
+    from clearfast_gis.registration._reference import _from_sitk, _to_sitk
 
     t = ConformalTransform(0.03, 2.5, -1.25, center_px=(50.0, 40.0))
     back = _from_sitk(_to_sitk(t, False, False), t.center_px, False, False)

@@ -176,6 +176,24 @@ def test_docs_table_is_the_registry():
     assert kernels.markdown_table() in DOCS.read_text()
 
 
+@pytest.mark.parametrize("name", sorted(kernels.REGISTRY))
+def test_implementations_live_in_their_domains_private_modules(name):
+    """``clearfast_gis.<domain>._kernels:<name>`` and ``clearfast_gis.<domain>._reference:<name>``;
+    the public function of the domain that holds the name calls it through the registry."""
+    pair = kernels.REGISTRY[name]
+    domain = pair.domain
+    assert pair.fast == f"clearfast_gis.{domain}._kernels:{name}"
+    assert pair.reference == f"clearfast_gis.{domain}._reference:{name}"
+    for kernel_set in kernels.KERNELS:
+        impl = pair.implementation(kernel_set)
+        assert impl.__name__ == name and impl.__module__ == pair.__getattribute__(
+            kernel_set).split(":")[0]
+    root = Path(kernels.__file__).parent / domain
+    callers = [p.name for p in root.glob("*.py")
+               if f'kernels.kernel("{name}")' in p.read_text()]
+    assert len(callers) == 1 and not callers[0].startswith("_"), callers
+
+
 def test_no_kernel_branch_left_in_public_functions():
     """Kernels are chosen through the registry only; ``parallel.serial_kernels`` asks which
     set is active to set the libraries' thread pools, which is not a kernel."""

@@ -206,6 +206,7 @@ def test_suspects_ranked_and_candidates_set_aside(demo_survey, demo_products):
     its reason, the expected operating curve in products.json, no shallow mine set aside."""
     import geopandas as gpd
 
+    from clearfast_gis.detection.likelihood import load_model
     from clearfast_gis.evaluation.ranked import score_ranked
 
     gpkg = demo_products / "anomalies.gpkg"
@@ -224,6 +225,10 @@ def test_suspects_ranked_and_candidates_set_aside(demo_survey, demo_products):
     assert oc["expected_mines"][-1] == pytest.approx(p.sum(), abs=0.01)
     score = score_ranked(demo_survey, demo_products)
     assert score.n_candidate_mines == 0
+    # screened and ranked again from the anomalies layer under the same model: the same list
+    again = score_ranked(demo_survey, demo_products, load_model())
+    assert np.array_equal(again.p_mine, score.p_mine)
+    assert np.array_equal(again.is_mine, score.is_mine) and again.n_candidates == len(cand)
     # the mines come first: every detected mine <= 5 cm before the list's expected false
     # alarms reach a handful (demo: 48 m2, 6 scans)
     assert score.pd_at(0.1) >= score.pd[-1] - 1e-9

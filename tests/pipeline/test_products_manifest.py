@@ -5,7 +5,7 @@ from __future__ import annotations
 import os
 from types import SimpleNamespace
 
-from clearfast_gis.pipeline.products import base_manifest
+from clearfast_gis.export.products import base_manifest
 from clearfast_gis.survey import read_survey
 from clearfast_gis.survey.testing import make_minimal_survey
 

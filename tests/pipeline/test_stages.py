@@ -8,10 +8,10 @@ from pathlib import Path
 import pytest
 
 from clearfast_gis.pipeline.options import MOSAIC_PARAMETERS, ProcessOptions
-from clearfast_gis.pipeline.resources import StageMeter
 from clearfast_gis.pipeline.stages import STAGE_NAMES, STAGES, RunContext, stage_index
 from clearfast_gis.pipeline.state import RunState
 from clearfast_gis.progress import NULL_PROGRESS
+from clearfast_gis.resources import StageMeter
 
 
 def context(options: ProcessOptions, products: Path = Path(".")) -> RunContext:

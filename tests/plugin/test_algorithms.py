@@ -310,3 +310,26 @@ def test_defaults_unknown_without_a_toolkit(qgis_app, fake_toolkit):
     from clearfast.toolkit import toolkit_defaults
 
     assert toolkit_defaults() == {}
+
+
+def test_progress_text_names_the_chains_stage_and_step(qgis_app):
+    """The toolkit's own JSON lines of a chain stage (``clearfast_gis.progress``) show in the
+    Processing dialog as the stage's name and label, then ``stage / step``."""
+    import io
+
+    from clearfast import toolkit
+
+    from clearfast_gis.progress import Progress
+
+    out = io.StringIO()
+    p = Progress("json", stream=out)
+    with p.chain_stage("attitude_adjustment", "survey-wide attitude adjustment"):
+        p.start("refined attitude adjustment", 4)
+        p.advance(2)
+    feedback, events = RecordingFeedback(), []
+    for line in out.getvalue().splitlines():
+        toolkit.handle_line(line, feedback, events)
+    assert feedback.texts == ["attitude_adjustment: survey-wide attitude adjustment",
+                              "attitude_adjustment / refined attitude adjustment"]
+    assert "attitude_adjustment / refined attitude adjustment: 4 steps" in feedback.infos
+    assert feedback.values[-1] == 50.0

@@ -129,17 +129,17 @@ def test_sample_budget_and_the_final_polish() -> None:
     """A small sample budget (the attitude ties' 12,000 of ~30,000 cells) keeps the shift to
     hundredths of a pixel; when every cell is already a sample the polish is skipped (the
     same problem again) and the result is the same as with a larger polish budget."""
-    from clearfast_gis.registration import conformal
+    from clearfast_gis.registration import _kernels
 
     truth = _truth(0.0, 3.4, -2.2)
     fixed, moving = make_pair(SHAPE, truth, seed=52, noise_k=0.1, invert=True)
     small = register_conformal(fixed, moving, max_angle_deg=0.0, max_shift_px=8.0,
                                max_samples=12_000, polish_samples=12_000)
     assert small.converged and rms_displacement(truth, small, SHAPE) <= 0.05
-    level = conformal._level_problem(fixed, moving, (0.0, 1.0), (0.0, 1.0), 24,
+    level = _kernels._level_problem(fixed, moving, (0.0, 1.0), (0.0, 1.0), 24,
                                      fixed.size, 1.0)
     assert level.complete and level.us.size == fixed.size
-    assert not conformal._level_problem(fixed, moving, (0.0, 1.0), (0.0, 1.0), 24,
+    assert not _kernels._level_problem(fixed, moving, (0.0, 1.0), (0.0, 1.0), 24,
                                         fixed.size - 1, 1.0).complete
     every = register_conformal(fixed, moving, max_angle_deg=0.0, max_shift_px=8.0,
                                max_samples=fixed.size, polish_samples=2 * fixed.size)

@@ -81,7 +81,7 @@ def test_contrast_noise_falls_back_to_the_camera():
 def test_dull_day_is_said_at_the_top_of_the_report(forcing, scans):
     """Under a full overcast a 5 cm mine gives less than the detector's cut: the day is
     called dull, the warning names the depth, and the report says it above the map."""
-    from clearfast_gis.pipeline.products import weak_day, weak_day_text
+    from clearfast_gis.export.products import weak_day, weak_day_text
     from clearfast_gis.report.html import ReportData, render_html
 
     soil, noise = get_soil("moist_sand"), 0.07  # clutter of a textured site, K

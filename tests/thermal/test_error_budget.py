@@ -25,7 +25,7 @@ def test_terms_add_in_quadrature():
     out = with_chain_errors(inversion())
     assert out.depth_sigma_m == pytest.approx(math.hypot(0.001, chain_depth_sigma_m(0.02)))
     assert chain_depth_sigma_m(0.02) == pytest.approx(math.hypot(0.01 * math.sqrt(0.24), 0.002))
-    assert out.log10_alpha_sigma == pytest.approx(math.hypot(0.04, 0.1))
+    assert out.log10_alpha_sigma == pytest.approx(math.hypot(0.04, 0.1, 0.07))
     assert out.status == "ok"
 
 
@@ -35,3 +35,16 @@ def test_too_uncertain_is_not_characterised_and_sigma_capped():
     assert out.status == "weak_contrast"
     assert with_chain_errors(inversion(depth_sigma_m=0.03)).status == "not_characterised"
     assert with_chain_errors(inversion(depth_sigma_m=math.inf)).depth_sigma_m == 0.20
+
+
+def test_disc_weights_are_the_area_shares_of_the_disc():
+    from clearfast_gis.thermal.grid import radial_faces
+    from clearfast_gis.thermal.table import disc_weights
+
+    faces = radial_faces(0.05, 0.4, 6)
+    w = disc_weights(faces, 0.05)
+    assert w.sum() == pytest.approx(1.0)
+    assert np.all(w[6:] == 0) and np.all(np.diff(w[:6]) > 0)  # annuli grow with radius
+    assert w[0] == pytest.approx((0.05 / 6) ** 2 / 0.05 ** 2)
+    axis = disc_weights(faces, 0.0)
+    assert axis[0] == 1.0 and axis[1:].sum() == 0.0

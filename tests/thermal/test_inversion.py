@@ -80,3 +80,21 @@ def test_radius_outside_the_table_is_rejected(forcing, scans, table):
     centre, bg = _observe(forcing, scans, 0.02)
     with pytest.raises(InvalidInput, match="radius_m"):
         invert_anomaly(scans, centre, bg, forcing, SOIL, 0.17, NOISE_K, table)
+
+
+def test_disc_table_holds_the_footprint_mean(forcing, scans):
+    """The chain's table (centre="disc"): per radius the model's mean over the object's disc,
+    smaller than the axis value (the surface falls off towards the rim) but of its sign; the
+    same values whether a radius is built alone or with others."""
+    grid = {"depths_m": [0.0, 0.01, 0.02, 0.04], "log10_alpha": [-7.5, -7.0, -6.5, -6.0]}
+    disc = build_site_table(forcing, SOIL, [RADIUS_M, 0.1], scans, centre="disc", **grid)
+    alone = build_site_table(forcing, SOIL, RADIUS_M, scans, centre="disc", **grid)
+    axis = build_site_table(forcing, SOIL, RADIUS_M, scans, **grid)
+    assert disc.centre == "disc" and axis.centre == "axis"
+    np.testing.assert_allclose(disc.contrast_k[0], alone.contrast_k[0], atol=1e-9)
+    a, d = axis.contrast_k[0, 1, 1], disc.contrast_k[0, 1, 1]  # TNT-like object at 1 cm
+    peak = np.argmax(np.abs(a))
+    assert np.sign(d[peak]) == np.sign(a[peak])
+    assert 0.3 * abs(a[peak]) < abs(d[peak]) < abs(a[peak])
+    with pytest.raises(InvalidInput):
+        build_site_table(forcing, SOIL, RADIUS_M, scans, centre="rim", **grid)

@@ -10,7 +10,8 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from clearfast_gis import kernels
-from clearfast_gis.thermal import MATERIALS, BuriedObject, banded, solver
+from clearfast_gis.thermal import MATERIALS, BuriedObject, solver
+from clearfast_gis.thermal import _kernels as banded
 from clearfast_gis.thermal.forward import ObjectModel, object_props
 from clearfast_gis.thermal.grid import depth_faces, radial_faces
 from clearfast_gis.thermal.solver import CellProps, SurfaceDrive, run
@@ -159,8 +160,10 @@ def test_object_model_surface_agrees_with_the_reference(forcing, scans, depth_m,
 
 def test_kernel_switch_selects_the_implementation(monkeypatch):
     calls = []
-    real_splu = solver.splu
-    monkeypatch.setattr(solver, "splu", lambda a: calls.append(1) or real_splu(a))
+    from clearfast_gis.thermal import _reference
+
+    real_splu = _reference.splu
+    monkeypatch.setattr(_reference, "splu", lambda a: calls.append(1) or real_splu(a))
     z, r, props = _object_case()
     init = np.full((z.size - 1, r.size - 1), 288.0)
     run(z, r, props, _drive(3, 600.0), 600.0, init)

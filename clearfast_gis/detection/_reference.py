@@ -1,4 +1,7 @@
-"""Reference (scikit-image) versions of the detector's morphology, for ``--kernels reference``.
+"""The detector's reference kernels (scikit-image), for ``--kernels reference``.
+
+The registry's (:mod:`clearfast_gis.kernels`) references of the fast kernels of
+:mod:`clearfast_gis.detection._kernels`, under the same names.
 
 Same conventions as :mod:`clearfast_gis.detection.morphology`: NaN (no-data) pixels are
 ignored by the erosion/dilation and are walls for the reconstruction; pixels outside the image
@@ -40,18 +43,18 @@ def _hat(image: np.ndarray, d1_px: float, dark: bool) -> np.ndarray:
     return out
 
 
-def top_hat_reference(image: np.ndarray, d1_px: float) -> np.ndarray:
+def top_hat_by_reconstruction(image: np.ndarray, d1_px: float) -> np.ndarray:
     """``f - R_B(f eroded by D1 | f)`` with :func:`skimage.morphology.erosion` and
     :func:`skimage.morphology.reconstruction`; float (H, W), NaN on no-data."""
     return _hat(image, d1_px, dark=False)
 
 
-def bottom_hat_reference(image: np.ndarray, d1_px: float) -> np.ndarray:
-    """``R*_B(f dilated by D1 | f) - f`` (dual of :func:`top_hat_reference`)."""
+def bottom_hat_by_reconstruction(image: np.ndarray, d1_px: float) -> np.ndarray:
+    """``R*_B(f dilated by D1 | f) - f`` (dual of :func:`top_hat_by_reconstruction`)."""
     return _hat(image, d1_px, dark=True)
 
 
-def binary_opening_reference(binary: np.ndarray, d2_px: float) -> np.ndarray:
+def binary_opening_by_reconstruction(binary: np.ndarray, d2_px: float) -> np.ndarray:
     """Binary opening by reconstruction with scikit-image: components of ``binary`` that
     contain a disk of diameter ``d2_px``, whole (8-connectivity); bool (H, W)."""
     g = np.asarray(binary, dtype=bool)

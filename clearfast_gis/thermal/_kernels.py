@@ -1,4 +1,11 @@
-"""Cholesky factorisation and solves of symmetric positive-definite band matrices (numba).
+"""The heat solver's fast kernels (``--kernels fast``, :mod:`clearfast_gis.kernels`).
+
+:func:`heat_equation` is the registry's ``heat_equation``:
+:func:`clearfast_gis.thermal.solver.run` on a band Cholesky factor with the whole time loop
+compiled (:func:`march`, GIL released); its reference, scipy's sparse LU with the time loop in
+Python, is :mod:`clearfast_gis.thermal._reference`.
+
+Cholesky factorisation and solves of symmetric positive-definite band matrices (numba).
 
 Storage is the lower band by columns: ``band[j, d] = A[j + d, j]`` for ``d = 0..p``, shape
 (n, p + 1), ``p`` the half-bandwidth; entries past the end of the matrix (``j + d >= n``) are
@@ -28,7 +35,15 @@ from clearfast_gis.thermal.moisture import (
     MAGNUS_B,
     MAGNUS_C_C,
 )
-from clearfast_gis.units import ZERO_CELSIUS_K
+from clearfast_gis.thermal.solver import (
+    SolverResult,
+    _band,
+    _initial,
+    _latent_arrays,
+    _network,
+    _step_terms,
+)
+from clearfast_gis.units import STEFAN_BOLTZMANN, ZERO_CELSIUS_K
 
 
 @numba.njit(cache=True, nogil=True)
@@ -290,3 +305,37 @@ def march(packed, c_dt, q_gain, k0, ts_gain, g_bottom, h, eps_sigma, flux, hc, t
             n_kept += 1
         if profiles.shape[0] > 0:
             profiles[step] = cur[p:p + n]
+
+
+def heat_equation(z_faces, r_faces, props, drive, dt_s, init_k, init_prev_k, surface_init_k,
+                  keep_states, keep_profiles) -> SolverResult:
+    """:func:`clearfast_gis.thermal.solver.run` on a band Cholesky factor with the time loop
+    compiled (GIL released)."""
+    nz, nr = z_faces.size - 1, r_faces.size - 1
+    net = _network(z_faces, r_faces, props)
+    h = float(drive.h_ref_wm2k)
+    c_dt, diag_add, q_gain, ts_gain = _step_terms(net.cap, net.ring, net.k0, net.idx[0], h,
+                                                  dt_s)
+    packed = pack(cholesky(_band(net, diag_add)))
+    n_steps = drive.flux_wm2.size - 1
+    t_now, t_prev, ts_now, ts_prev = _initial(init_k, init_prev_k, surface_init_k, net.idx[0])
+    keep = set(keep_states)
+    steps = [n for n in range(n_steps + 1) if n in keep]
+    mask = np.zeros(n_steps + 1, dtype=np.bool_)
+    mask[steps] = True
+    kept = np.empty((len(steps), nz * nr))
+    surface = np.empty((n_steps + 1, nr))
+    profiles = np.empty((n_steps + 1 if keep_profiles else 0, nz * nr))
+
+    def f64(a):
+        return np.ascontiguousarray(a, dtype=np.float64)
+
+    lat, water, theta, theta_out = _latent_arrays(drive, dt_s, nr)
+    march(packed, c_dt, f64(q_gain), f64(net.k0), f64(ts_gain), f64(net.g_bottom), h,
+                 float(drive.emissivity * STEFAN_BOLTZMANN), f64(drive.flux_wm2),
+                 f64(drive.hc_wm2k), f64(drive.bottom_k), t_now, f64(t_prev), f64(ts_now),
+                 f64(ts_prev), mask, surface, kept, profiles, *lat, water, theta, theta_out)
+    states = {n: kept[i].reshape(nz, nr) for i, n in enumerate(steps)}
+    return SolverResult(surface, states,
+                        profiles.reshape(n_steps + 1, nz, nr) if keep_profiles else None,
+                        theta_out if drive.latent is not None else None)

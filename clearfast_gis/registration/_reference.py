@@ -1,4 +1,5 @@
-"""Reference MI registration with SimpleITK (``--kernels reference``).
+"""Reference MI registration with SimpleITK (``--kernels reference``): the registry's
+reference of ``register_conformal`` (:mod:`clearfast_gis.kernels`).
 
 The same problem as :func:`clearfast_gis.registration.register_conformal`: the starting points
 come from the same polarity-blind phase correlation of gradient magnitudes, each is refined by
@@ -15,7 +16,9 @@ from dataclasses import replace
 import numpy as np
 import SimpleITK as sitk
 
-from clearfast_gis.registration.pyramid import masked_pyramid, n_levels_for
+from clearfast_gis.registration._kernels import _bin_scale, _level_problem, _normalised_mi
+from clearfast_gis.registration.conformal import MAX_LOG_SCALE
+from clearfast_gis.registration.pyramid import masked_gaussian, masked_pyramid, n_levels_for
 from clearfast_gis.registration.search import gradient_magnitude, rotation_candidates
 from clearfast_gis.registration.transform import ConformalTransform
 
@@ -156,3 +159,27 @@ def _method(f_mask: sitk.Image, m_mask: sitk.Image, seed: int) -> sitk.ImageRegi
     reg.SetSmoothingSigmasPerLevel([2, 1, 0])
     reg.SmoothingSigmasAreSpecifiedInPhysicalUnitsOn()
     return reg
+
+
+def register_conformal(f0: np.ndarray, m0: np.ndarray, base: ConformalTransform, search: bool,
+               scale: bool, max_shift_px: float | None, shift_bound: float,
+               max_angle_rad: float, bins: int, max_samples: int, smooth_px: float,
+               min_overlap: float, min_metric: float, polish_samples: int = 0
+               ) -> ConformalTransform:
+    """:func:`register_conformal` by SimpleITK (``--kernels reference``), judged by the same
+    acceptance test (overlap, normalised MI at the finest level, bounds); SimpleITK has no
+    separate polish (``polish_samples`` is not used)."""
+    result, _ = register_reference(f0, m0, base, search, scale, max_shift_px,
+                                   math.degrees(max_angle_rad))
+    fl, ml = masked_gaussian(f0, smooth_px), masked_gaussian(m0, smooth_px)
+    problem = _level_problem(fl, ml, _bin_scale(f0[np.isfinite(f0)]),
+                             _bin_scale(m0[np.isfinite(m0)]), bins, max_samples, 1.0)
+    mi, n_overlap, _ = problem.evaluate(result, False)
+    inside = (max(abs(result.tx_px - base.tx_px), abs(result.ty_px - base.ty_px))
+              <= shift_bound
+              and abs(result.angle_rad - base.angle_rad) <= max_angle_rad + 1e-9
+              and abs(math.log(result.scale)) <= MAX_LOG_SCALE)
+    converged = (n_overlap >= max(64, min_overlap * problem.us.size)
+                 and _normalised_mi(mi, problem.hist) >= min_metric and inside)
+    return replace(result, metric=float(mi), n_samples=int(n_overlap),
+                   converged=bool(converged))
