@@ -29,11 +29,11 @@ import numpy as np
 
 from clearfast_gis.evaluation.truth import placement_errors, read_true_poses
 from clearfast_gis.export.cog import read_mosaic
+from clearfast_gis.export.layout import mosaic_rel
 from clearfast_gis.geometry.grid import GroundGrid
 from clearfast_gis.mosaic import FrameInput, build_scan_mosaic, temporal_residual
-from clearfast_gis.mosaic.frames import scan_frames
-from clearfast_gis.pipeline.inputs import air_function, open_context
-from clearfast_gis.pipeline.state import mosaic_rel
+from clearfast_gis.mosaic.frames import air_function, scan_frames
+from clearfast_gis.pipeline.inputs import open_context
 
 
 def true_pose_mosaic(ctx, scan: int, grid: GroundGrid, truth: dict) -> np.ndarray:

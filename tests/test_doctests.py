@@ -12,7 +12,7 @@ MODULES = [
     "clearfast_gis.detection.voting",
     "clearfast_gis.attitude.adjust",
     "clearfast_gis.attitude.neighbours",
-    "clearfast_gis.pipeline.state",
+    "clearfast_gis.export.layout",
     "clearfast_gis.pipeline.run",
     "clearfast_gis.progress",
     "clearfast_gis.kernels",

@@ -283,10 +283,10 @@ def placement_errors(survey: str | Path, products: str | Path, step_px: int = 8,
     import rasterio
 
     from clearfast_gis.attitude.placement import placement_attitude
+    from clearfast_gis.export.layout import STATE_DIR, mosaic_rel, source_rel
     from clearfast_gis.mosaic.frames import frame_poses
     from clearfast_gis.pipeline.adjustment import REFINED_UNIT, UNIT
     from clearfast_gis.pipeline.inputs import open_context
-    from clearfast_gis.pipeline.state import STATE_DIR, mosaic_rel, source_rel
 
     products = Path(products)
     manifest = json.loads((products / "products.json").read_text())

@@ -9,11 +9,11 @@ from clearfast_gis.export.cog import (
     SCAN_TIME_TAG,
     Mosaic,
     band_description,
-    mosaic_name,
     read_mosaic,
     write_cog,
 )
 from clearfast_gis.export.geopackage import add_layer_styles, read_layer_styles, write_geopackage
+from clearfast_gis.export.layout import mosaic_name
 from clearfast_gis.export.manifest import (
     read_products_manifest,
     sha256_file,

@@ -14,13 +14,15 @@ import os
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from datetime import UTC, datetime
+from pathlib import Path
 
 import numpy as np
 from affine import Affine
 
 from clearfast_gis.atomic import atomic_path
 from clearfast_gis.errors import InvalidInput
-from clearfast_gis.parallel import n_threads
+from clearfast_gis.export.layout import mosaic_rel
+from clearfast_gis.parallel import n_threads, thread_map
 from clearfast_gis.timeutil import format_utc, parse_utc
 
 SCAN_TIME_TAG = "CLEARFAST_SCAN_TIME_UTC"
@@ -222,8 +224,16 @@ def read_mosaic(path: str | os.PathLike) -> Mosaic:
     return Mosaic(bands, transform, int(epsg), descriptions, tags, scan_time_s, overviews)
 
 
-def mosaic_name(scan: int) -> str:
-    """File name of scan ``scan``'s mosaic inside ``mosaics/``: ``scan_007.tif``."""
-    if scan < 0:
-        raise ValueError("scan index must be >= 0")
-    return f"scan_{scan:03d}.tif"
+def read_mosaic_stack(products: Path, scans: list[int]) -> tuple[np.ndarray, Mosaic]:
+    """The scans' mosaics in a products folder as one float32 (N, B, H, W) array (filled as
+    they are read, on threads that decompress side by side, so that the stack is the only full
+    copy in memory) and the first mosaic's record."""
+    first = read_mosaic(products / mosaic_rel(scans[0]))
+    stack = np.empty((len(scans), *first.bands_c.shape), dtype=np.float32)
+    stack[0] = first.bands_c
+
+    def fill(k: int) -> None:
+        stack[k] = read_mosaic(products / mosaic_rel(scans[k])).bands_c
+
+    thread_map(fill, range(1, len(scans)))
+    return stack, first

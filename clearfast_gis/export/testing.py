@@ -16,8 +16,9 @@ import numpy as np
 from affine import Affine
 
 from clearfast_gis import __version__
-from clearfast_gis.export.cog import band_description, mosaic_name, write_cog
+from clearfast_gis.export.cog import band_description, write_cog
 from clearfast_gis.export.geopackage import write_geopackage
+from clearfast_gis.export.layout import mosaic_name
 from clearfast_gis.export.manifest import write_products_manifest
 from clearfast_gis.export.styles import default_styles
 from clearfast_gis.export.suspects import contrast_series_text, suspects_frame

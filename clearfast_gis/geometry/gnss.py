@@ -52,6 +52,25 @@ def utm_epsg_for(lat_deg: float, lon_deg: float) -> int:
     return (32600 if lat >= 0.0 else 32700) + zone
 
 
+def survey_epsg(survey, gnss) -> int:
+    """EPSG code of a survey's CRS: the one its manifest states, else the UTM zone of its
+    first usable GNSS fix.
+
+    Raises
+    ------
+    InvalidInput
+        No CRS stated and no usable fix (naming the GNSS log).
+    """
+    crs = survey.manifest.get("crs") or {}
+    if crs.get("epsg"):
+        return int(crs["epsg"])
+    ok = gnss.usable
+    if not np.any(ok):
+        raise InvalidInput("no GNSS fix to choose the UTM zone", survey.label("gnss"))
+    i = int(np.flatnonzero(ok)[0])
+    return utm_epsg_for(float(gnss.lat_deg[i]), float(gnss.lon_deg[i]))
+
+
 @functools.lru_cache(maxsize=32)
 def _transformer(src: int, dst: int) -> Transformer:
     return Transformer.from_crs(CRS.from_epsg(src), CRS.from_epsg(dst), always_xy=True)

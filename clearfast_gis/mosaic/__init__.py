@@ -1,7 +1,8 @@
 """Georeferenced mosaics (paper §5): ground projection, co-registration, insertion, seams.
 
 The functions here work on arrays; :mod:`clearfast_gis.pipeline` feeds them frames from a survey
-and writes the results with :mod:`clearfast_gis.export`.
+and writes the results with :mod:`clearfast_gis.export`. The mosaic stage's worker
+(:mod:`.scanjob`) builds the scans in order and writes them; it is imported on its own.
 """
 
 from clearfast_gis.mosaic.build import FrameInput, ScanMosaic, build_scan_mosaic

@@ -22,6 +22,7 @@ from clearfast_gis.radiometry.stage import (
     apparent_temperature_frames,
     band_table,
     has_transmittance_model,
+    weather_at,
 )
 from clearfast_gis.registration import ConformalTransform, warp_conformal
 from clearfast_gis.units import ZERO_CELSIUS_K
@@ -193,3 +194,10 @@ def first_scan_band_frames(ctx_partial, scan: int, air_at, max_frames: int = 24
                                           ctx_partial.events, air_at(times), atmosphere=False)
         out.append(t_k)
     return out
+
+
+def air_function(ctx: SurveyContext):
+    """``air_at(time_s) -> AirState``: the survey's weather log interpolated at frame times
+    (the ``air_at`` of :func:`scan_frames`), errors naming the weather log."""
+    label = ctx.survey.label("weather")
+    return lambda t: weather_at(ctx.weather, t, source=label)

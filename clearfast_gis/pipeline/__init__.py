@@ -7,8 +7,9 @@ command line and the QGIS plugin show) stays light to import.
 
 The package only orchestrates: :mod:`.stages` (the stages and their records), :mod:`.run` (the
 loop), :mod:`.state` (run state and resume), :mod:`.options` (the defaults), :mod:`.inputs`
-(what is read from a survey folder), :mod:`.scanjob` (the mosaic stage's worker and the scan
-order), :mod:`.adjustment` and :mod:`.anomalies` (the attitude-adjustment and anomaly stages).
+(what is read from a survey folder), :mod:`.scanjob` (the band and mosaic stages' run-state
+units; the worker and the scan order are :mod:`clearfast_gis.mosaic.scanjob`),
+:mod:`.adjustment` and :mod:`.anomalies` (the attitude-adjustment and anomaly stages).
 The algorithms they call live in their domains (``attitude``, ``mosaic``, ``detection``,
 ``thermal``, ``export``, ...; README "The chain").
 """

@@ -4,39 +4,22 @@ they hand to the products writers is :class:`clearfast_gis.export.records.Anomal
 from __future__ import annotations
 
 import json
-from pathlib import Path
 
 import numpy as np
 
 from clearfast_gis.detection.likelihood import screen_and_rank
 from clearfast_gis.detection.markers import markers_in_mosaics, split_markers
 from clearfast_gis.detection.voting import detect_on_mosaics
-from clearfast_gis.export.cog import read_mosaic
+from clearfast_gis.export.cog import read_mosaic_stack
 from clearfast_gis.export.manifest import read_products_manifest
 from clearfast_gis.export.products import write_anomaly_products
 from clearfast_gis.export.records import AnomalySet, suspect_records
-from clearfast_gis.parallel import thread_map
 from clearfast_gis.pipeline import stages
 from clearfast_gis.pipeline.scanjob import scan_part
 from clearfast_gis.pipeline.stages import Characterisation, Detection, RunContext
-from clearfast_gis.pipeline.state import StageState, mosaic_rel
+from clearfast_gis.pipeline.state import StageState
 from clearfast_gis.thermal.daycontrast import contrast_noise_k, day_contrast
 from clearfast_gis.thermal.sitesoil import characterise, site_soil
-
-
-def _load_stack(products: Path, scans: list[int]) -> tuple[np.ndarray, object]:
-    """The scans' mosaics as one float32 (N, B, H, W) array (filled as they are read, on
-    threads that decompress side by side, so that the stack is the only full copy in memory)
-    and the first mosaic's record."""
-    first = read_mosaic(products / mosaic_rel(scans[0]))
-    stack = np.empty((len(scans), *first.bands_c.shape), dtype=np.float32)
-    stack[0] = first.bands_c
-
-    def fill(k: int) -> None:
-        stack[k] = read_mosaic(products / mosaic_rel(scans[k])).bands_c
-
-    thread_map(fill, range(1, len(scans)))
-    return stack, first
 
 
 def _mosaics_digest(mosaics: StageState, scans: list[int]) -> str:
@@ -63,7 +46,7 @@ def detect(c: RunContext) -> Detection:
     o = c.options
     times = np.array([scan_records[s]["time_s"] for s in scans])
     lon = float(read.ctx.survey.manifest["site"]["longitude_deg"])
-    stack, first = _load_stack(c.products, scans)
+    stack, first = read_mosaic_stack(c.products, scans)
     labels, feats = detect_on_mosaics(stack, times, first.transform, read.grid.pixel_size, lon,
                                       o.d1_m, o.d2_m, o.epsilon, o.level, o.gamma,
                                       o.max_anomalies, level_fraction=o.level_fraction,

@@ -1,7 +1,7 @@
 """What the chain reads from a survey folder: the validated survey and its logs, the
 platform track, the calibration events, the survey's CRS, the identity of the inputs (the
 mosaic grid, its cell size and the reference scan are chosen in
-:mod:`clearfast_gis.mosaic.survey_grid`; the markers and the fix summary in
+:mod:`clearfast_gis.mosaic.survey_grid`; the CRS, the markers and the fix summary in
 :mod:`clearfast_gis.geometry.gnss`)."""
 
 from __future__ import annotations
@@ -9,28 +9,13 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
-import numpy as np
-
 from clearfast_gis import __version__
 from clearfast_gis.errors import InvalidInput
-from clearfast_gis.geometry.gnss import platform_track, smooth_static_track, utm_epsg_for
-from clearfast_gis.mosaic.frames import (
-    SurveyContext,
-)
+from clearfast_gis.geometry.gnss import platform_track, smooth_static_track, survey_epsg
+from clearfast_gis.mosaic.frames import SurveyContext
 from clearfast_gis.progress import NULL_PROGRESS, Progress
-from clearfast_gis.radiometry.stage import calibration_events, weather_at
+from clearfast_gis.radiometry.stage import calibration_events
 from clearfast_gis.registration import ConformalTransform
-
-
-def survey_epsg(survey, gnss) -> int:
-    crs = survey.manifest.get("crs") or {}
-    if crs.get("epsg"):
-        return int(crs["epsg"])
-    ok = gnss.usable
-    if not np.any(ok):
-        raise InvalidInput("no GNSS fix to choose the UTM zone", survey.label("gnss"))
-    i = int(np.flatnonzero(ok)[0])
-    return utm_epsg_for(float(gnss.lat_deg[i]), float(gnss.lon_deg[i]))
 
 
 def input_key(survey, station_profile: str | Path | None = None) -> str:
@@ -95,10 +80,3 @@ def open_context(survey_path: str | Path, progress: Progress = NULL_PROGRESS,
     ctx = SurveyContext(survey, survey.camera, track, events, weather,
                         [ConformalTransform.identity()] * len(survey.bands))
     return ctx, epsg, report
-
-
-def air_function(ctx: SurveyContext):
-    label = ctx.survey.label("weather")
-    return lambda t: weather_at(ctx.weather, t, source=label)
-
-

@@ -250,8 +250,9 @@ def _bands(c: RunContext) -> BandOffsets:
 
 
 def _mosaics(c: RunContext) -> ScanMosaics:
+    from clearfast_gis.mosaic.scanjob import scan_mosaics
     from clearfast_gis.pipeline.adjustment import stored_model
-    from clearfast_gis.pipeline.scanjob import scan_job, scan_mosaics
+    from clearfast_gis.pipeline.scanjob import scan_job
 
     read = c[READ]
     c.job = scan_job(c, read, c.stage_state(MOSAICS))
@@ -273,7 +274,7 @@ def _adjustment(c: RunContext) -> AttitudeAdjustment:
 
 def _footprint(c: RunContext) -> Footprint:
     from clearfast_gis.export.products import write_footprint_geojson
-    from clearfast_gis.pipeline.scanjob import temporal_residuals
+    from clearfast_gis.mosaic.temporal import temporal_residuals
 
     c.job.close()
     read = c[READ]

@@ -26,24 +26,8 @@ from pathlib import Path
 
 from clearfast_gis.atomic import _describe_os_error, remove_temporaries, write_text
 from clearfast_gis.errors import OutputError
+from clearfast_gis.export.layout import STATE_DIR
 from clearfast_gis.export.manifest import sha256_file
-
-STATE_DIR = ".clearfast"
-"""Folder of the run state (and the scans' source maps) inside a products folder."""
-
-
-def mosaic_rel(scan: int) -> str:
-    """Relative path of a scan's mosaic in the products folder.
-
-    >>> mosaic_rel(7)
-    'mosaics/scan_007.tif'
-    """
-    return f"mosaics/scan_{scan:03d}.tif"
-
-
-def source_rel(scan: int) -> str:
-    """Relative path of a scan's source map (scan-pattern position seen in each cell)."""
-    return f"{STATE_DIR}/source_{scan:03d}.npy"
 
 
 class RunState:

@@ -11,7 +11,8 @@ from hypothesis import strategies as st
 
 from clearfast_gis.errors import InvalidInput
 from clearfast_gis.export import band_description, mosaic_name, read_mosaic, write_cog
-from clearfast_gis.export.cog import default_overview_factors
+from clearfast_gis.export.cog import default_overview_factors, read_mosaic_stack
+from clearfast_gis.export.layout import mosaic_rel
 from clearfast_gis.timeutil import parse_utc
 
 TRANSFORM = Affine(0.05, 0.0, 532780.0, 0.0, -0.05, 3891985.0)
@@ -24,6 +25,22 @@ def bands():
     arr[:, :40, :70] = np.nan
     return arr
 
+
+def test_mosaic_stack_of_a_products_folder(tmp_path):
+    """The scans' mosaics, in the order asked, as one float32 (N, B, H, W) array."""
+    rng = np.random.default_rng(3)
+    scans = [5, 2, 9]
+    bands = {s: rng.normal(15.0 + s, 1.0, size=(2, 40, 60)).astype(np.float32) for s in scans}
+    bands[2][1, :5, :7] = np.nan
+    for s in scans:
+        write_cog(tmp_path / mosaic_rel(s), bands[s], TRANSFORM, 32636, ["a", "b"],
+                  {"CLEARFAST_SCAN": s})
+    assert mosaic_rel(2) == f"mosaics/{mosaic_name(2)}" == "mosaics/scan_002.tif"
+    stack, first = read_mosaic_stack(tmp_path, scans)
+    assert stack.dtype == np.float32 and stack.shape == (3, 2, 40, 60)
+    for k, s in enumerate(scans):
+        np.testing.assert_array_equal(stack[k], bands[s])
+    assert first.tags["CLEARFAST_SCAN"] == "5" and first.transform == TRANSFORM
 
 def test_round_trip_values_crs_tags(tmp_path, bands):
     path = tmp_path / "mosaics" / mosaic_name(7)

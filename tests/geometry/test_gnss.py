@@ -14,6 +14,7 @@ from pyproj.database import query_utm_crs_info
 
 from clearfast_gis.errors import InvalidInput
 from clearfast_gis.geometry import crs_to_lonlat, lonlat_to_crs, platform_track, utm_epsg_for
+from clearfast_gis.geometry.gnss import survey_epsg
 
 
 def snyder_utm(lat_deg: float, lon_deg: float, zone: int) -> tuple[float, float]:
@@ -133,6 +134,32 @@ def test_track_without_fix_is_invalid():
     with pytest.raises(InvalidInput, match="no usable fix"):
         platform_track(_log([0, 1], [np.nan] * 2, [np.nan] * 2, [np.nan] * 2, [0, 0]),
                        32636, 0.0)
+
+
+def _survey(crs=None):
+    manifest = {} if crs is None else {"crs": crs}
+    return SimpleNamespace(manifest=manifest, label=lambda key: f"survey/{key}.nmea")
+
+
+def test_survey_epsg_stated_crs_wins_over_the_fixes():
+    gnss = SimpleNamespace(usable=np.array([True]), lat_deg=np.array([50.85]),
+                           lon_deg=np.array([4.35]))
+    assert survey_epsg(_survey({"epsg": 32636}), gnss) == 32636
+
+
+def test_survey_epsg_from_the_first_usable_fix():
+    gnss = SimpleNamespace(usable=np.array([False, True, True]),
+                           lat_deg=np.array([-33.92, 35.17, 50.85]),
+                           lon_deg=np.array([18.42, 33.36, 4.35]))
+    assert survey_epsg(_survey(), gnss) == 32636  # Cyprus, not Cape Town's nor Brussels'
+
+
+def test_survey_epsg_without_a_usable_fix_names_the_log():
+    gnss = SimpleNamespace(usable=np.array([False]), lat_deg=np.array([35.17]),
+                           lon_deg=np.array([33.36]))
+    with pytest.raises(InvalidInput, match="no GNSS fix to choose the UTM zone") as exc:
+        survey_epsg(_survey(), gnss)
+    assert "survey/gnss.nmea" in exc.value.one_line()
 
 
 @given(st.lists(st.tuples(st.floats(-0.001, 0.001), st.floats(-0.001, 0.001),
