@@ -75,8 +75,10 @@ def _run(c: RunContext, first: int | None, last: int) -> dict:
     t_all, cpu_all = time.perf_counter(), cpu_seconds()
     try:
         for k, stage in enumerate(STAGES[:last + 1]):
-            if first is not None and k == max(first, 1):
-                for later in STAGES[k:]:
+            if first is not None and k == 1:
+                # the run state exists once the first stage has opened it: forget every stage
+                # from ``first`` on before any later stage can take an earlier run as up to date
+                for later in STAGES[max(first, 1):]:
                     c.state.drop(later.name)
             with c.meter.stage(stage.name), c.progress.chain_stage(stage.name, stage.label):
                 c.records[stage.name] = stage.run(c)

@@ -67,3 +67,19 @@ def test_units_are_kept_per_stage_key(tmp_path):
 def test_unknown_stage_names_the_stages():
     with pytest.raises(ValueError, match="unknown stage 'mosaic'.*residuals_and_footprint"):
         stage_index("mosaic")
+
+
+def test_from_a_later_stage_redoes_it_and_never_keeps_the_old_products(demo_survey,
+                                                                      demo_products, tmp_path):
+    """``--from characterisation`` re-runs characterisation and products even though the
+    detection stage would otherwise find the earlier run's products up to date."""
+    import shutil
+
+    from clearfast_gis.pipeline import process_survey
+
+    products = tmp_path / "products"
+    shutil.copytree(demo_products, products)
+    (products / "anomalies.gpkg").unlink()
+    manifest = process_survey(demo_survey, products, from_stage="characterisation")
+    assert (products / "anomalies.gpkg").exists()
+    assert manifest["timings_s"]["characterisation"] > 0.05
