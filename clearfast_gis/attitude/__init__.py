@@ -6,7 +6,8 @@ recovered from ties (measured ground displacements, :mod:`.ties`): per scan by a
 markers (:mod:`.scan`); then once for the whole survey, a smooth attitude over time adjusted to
 all ties at once (:mod:`.adjust`), optionally with ties between neighbouring placed scans
 (:mod:`.neighbours`); which attitude each scan was placed with, and which scans an adjustment
-moves (:mod:`.placement`). The chain (:mod:`clearfast_gis.pipeline`) runs them and records them.
+moves (:mod:`.placement`); the adjustment as the chain runs it, resumable (:mod:`.survey`).
+The chain (:mod:`clearfast_gis.pipeline`) runs them and records them.
 """
 
 from clearfast_gis.attitude.adjust import (

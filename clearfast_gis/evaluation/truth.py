@@ -283,17 +283,19 @@ def placement_errors(survey: str | Path, products: str | Path, step_px: int = 8,
     import rasterio
 
     from clearfast_gis.attitude.placement import placement_attitude
+    from clearfast_gis.attitude.survey import REFINED
     from clearfast_gis.export.layout import STATE_DIR, mosaic_rel, source_rel
     from clearfast_gis.mosaic.frames import frame_poses
-    from clearfast_gis.pipeline.adjustment import REFINED_UNIT, UNIT
     from clearfast_gis.pipeline.inputs import open_context
+    from clearfast_gis.pipeline.stages import ADJUSTMENT
 
     products = Path(products)
     manifest = json.loads((products / "products.json").read_text())
     units = json.loads((products / STATE_DIR / "state.json").read_text())["units"]
     models = {level: (np.array(units[u]["node_times_s"], dtype=float),
                       np.array(units[u]["nodes_rpy_deg"], dtype=float))
-              for level, u in ((1, UNIT), (2, REFINED_UNIT)) if u in units}
+              for level, u in ((1, ADJUSTMENT), (2, f"{ADJUSTMENT}/{REFINED}"))
+              if u in units}
     scans = [int(r["scan"]) for r in manifest["scans"]]
     if reference_scan is None:
         refs = {r.get("reference_scan") for r in manifest["scans"]} - {None}

@@ -215,7 +215,7 @@ def scan_mosaics(job: ScanJob, order: list[int], ref: int, model=None
     finished scans of an earlier run are kept.
 
     ``model`` is the survey-wide attitude (node times, nodes) that scans of an earlier run
-    were placed with, when the adjustment ran (:func:`~clearfast_gis.pipeline.adjustment.
+    were placed with, when the adjustment ran (:func:`~clearfast_gis.attitude.survey.
     stored_model`).
 
     Returns

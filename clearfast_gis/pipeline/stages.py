@@ -250,8 +250,8 @@ def _bands(c: RunContext) -> BandOffsets:
 
 
 def _mosaics(c: RunContext) -> ScanMosaics:
+    from clearfast_gis.attitude.survey import stored_model
     from clearfast_gis.mosaic.scanjob import scan_mosaics
-    from clearfast_gis.pipeline.adjustment import stored_model
     from clearfast_gis.pipeline.scanjob import scan_job
 
     read = c[READ]
@@ -262,7 +262,7 @@ def _mosaics(c: RunContext) -> ScanMosaics:
 
 
 def _adjustment(c: RunContext) -> AttitudeAdjustment:
-    from clearfast_gis.pipeline.adjustment import adjust_survey_attitude
+    from clearfast_gis.attitude.survey import adjust_survey_attitude
 
     if not (c.options.coregister and c.options.adjust_attitude):
         return AttitudeAdjustment(None)

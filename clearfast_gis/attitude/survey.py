@@ -1,6 +1,11 @@
-"""The survey-wide attitude adjustment stage: fit, then project again the scans it moves."""
+"""The survey-wide attitude adjustment as the chain runs it: fit every scan's attitude at once,
+project again the scans it moves, then (when the platform drifted) tie neighbouring adjusted
+scans, adjust again and project again; each adjustment recorded as a unit of the stage's run
+state so that an interrupted run resumes where it stopped."""
 
 from __future__ import annotations
+
+from typing import Protocol
 
 import numpy as np
 
@@ -11,24 +16,22 @@ from clearfast_gis.attitude.placement import (
     placement_attitude,
 )
 from clearfast_gis.attitude.ties import LinearTie
-from clearfast_gis.pipeline.state import StageState
 from clearfast_gis.progress import Progress
 
-STAGE = "attitude_adjustment"
-"""The chain's stage (:mod:`clearfast_gis.pipeline.stages`) whose units these are."""
-
 REFINED = "refined"
-"""Part of the stage that records the refined adjustment (ties between neighbouring adjusted
-scans); the first adjustment is the stage's own unit."""
-
-UNIT = STAGE
-"""Run-state unit of the adjustment."""
-
-REFINED_UNIT = f"{STAGE}/{REFINED}"
-"""Run-state unit of the refined adjustment."""
+"""Part of the stage's run state that records the refined adjustment (ties between
+neighbouring adjusted scans); the first adjustment is the stage's own unit (part ``""``)."""
 
 
-def stored_model(state: StageState) -> tuple[np.ndarray, np.ndarray] | None:
+class UnitStore(Protocol):
+    """A stage's finished units (:class:`clearfast_gis.pipeline.state.StageState`)."""
+
+    def done(self, part: str = "") -> dict | None: ...
+
+    def finish(self, part: str, record: dict) -> None: ...
+
+
+def stored_model(state: UnitStore) -> tuple[np.ndarray, np.ndarray] | None:
     """The adjusted attitude recorded in the run state (the refined one once it exists), if
     the adjustment ran.
 
@@ -74,8 +77,9 @@ def adjust_survey_attitude(job, state, order: list[int], scan_records: dict[int,
     Parameters
     ----------
     job : the pipeline's scan job (``frame_times``, ``build``, ``reference``)
-    state : StageState
-        The stage's run state: each adjustment is a unit of its own; re-projected scans are
+    state : UnitStore
+        The stage's run state (:class:`clearfast_gis.pipeline.state.StageState`): each
+        adjustment is a unit of its own; re-projected scans are
         marked ``adjusted`` (1, or 2 after the refined adjustment) so an interrupted run
         resumes where it stopped.
     order : list of int
