@@ -84,6 +84,21 @@ def test_result_shapes_and_nodata(diurnal):
     assert result.scan_hot.shape == (N, H, W)
     assert not result.mask[:3, :10].any()
     assert result.level == N / 2
+    assert result.covered.dtype == np.int32
+    np.testing.assert_array_equal(result.covered, np.isfinite(stack).sum(axis=0))
+
+
+def test_scan_support_reads_the_packed_maps(diurnal):
+    """The per-scan support of a set of pixels, read from the packed L_i, is the OR of the
+    unpacked maps over those pixels (columns on and off byte boundaries)."""
+    _, _, result, _ = diurnal
+    rows, cols = np.nonzero(result.labels == 1)
+    assert rows.size and result.scan_hot.any()
+    for r, c in ((rows, cols), (rows[:1], cols[:1]), (np.array([5, 9]), np.array([7, 8]))):
+        hot, cold = result.support(r, c)
+        np.testing.assert_array_equal(hot, result.scan_hot[:, r, c].any(axis=1))
+        np.testing.assert_array_equal(cold, result.scan_cold[:, r, c].any(axis=1))
+    assert result.support(rows, cols)[0].sum() >= 2
 
 
 def test_multiband_stack_runs(diurnal):
