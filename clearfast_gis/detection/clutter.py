@@ -40,14 +40,17 @@ def image_clutter_k(image: np.ndarray, pixel_size_m: float, keep: np.ndarray | N
     float
         NaN when no cell is measured.
     """
-    img = np.asarray(image, dtype=np.float64)
-    ok = np.isfinite(img) if keep is None else np.isfinite(img) & keep
+    finite = np.isfinite(image)
+    ok = finite if keep is None else finite & keep
     if not ok.any():
         return float("nan")
     size = max(3, int(round(scale_m / pixel_size_m)) | 1)
-    filled = np.where(np.isfinite(img), img, np.median(img[np.isfinite(img)]))
+    img = np.asarray(image, dtype=np.float64)
+    # the medians select in place in temporaries of their own (the same order statistics)
+    filled = np.where(finite, img, np.median(img[finite], overwrite_input=True))
     v = (filled - ndimage.uniform_filter(filled, size=size, mode="nearest"))[ok]
-    return float(1.4826 * np.median(np.abs(v - np.median(v))))
+    np.abs(np.subtract(v, np.median(v), out=v), out=v)
+    return float(1.4826 * np.median(v, overwrite_input=True))
 
 
 def background_levels(stack, labels: np.ndarray, pixel_size_m: float,
