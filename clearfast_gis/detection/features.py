@@ -307,16 +307,19 @@ def blob_features(
         raise ValueError(f"{len(np.atleast_1d(times_s))} times for {n} scans")
     if noise not in ("ring", "image"):
         raise ValueError(f"noise must be 'ring' or 'image', got {noise!r}")
+    if pixel_size_m is None and transform is not None:
+        pixel_size_m = float(np.sqrt(abs(transform.a * transform.e - transform.b * transform.d)))
+    ps = float("nan") if pixel_size_m is None else float(pixel_size_m)
+    regions = regionprops(labels.astype(np.int32))
+    if not regions:
+        return []
     # a pixel seen in some scans only (a footprint that moves, paper §6) still serves the
     # ring of those scans: every mean below is over the scans that saw it
     covered = detection.covered if detection is not None else count_finite(
         iter_images(source))
     valid = covered > 0
-    if pixel_size_m is None and transform is not None:
-        pixel_size_m = float(np.sqrt(abs(transform.a * transform.e - transform.b * transform.d)))
-    ps = float("nan") if pixel_size_m is None else float(pixel_size_m)
     blobs = []
-    for region in regionprops(labels.astype(np.int32)):
+    for region in regions:
         row, col = (float(v) for v in region.centroid)
         r_eq = float(np.sqrt(4.0 * int(region.area) / np.pi)) / 2.0
         r_in = max(ring_radii[0] * r_eq, r_eq + 1.0)

@@ -267,3 +267,13 @@ def test_weak_mine_among_strong_objects_needs_the_noise_cut():
     # the strong objects stay found, and texture does not gather the votes of a mine
     assert capped.labels[50, 50] > 0 and capped.labels[150, 190] > 0
     assert capped.n_anomalies <= 6
+
+
+def test_no_blob_no_features_and_no_pass_over_the_scans():
+    class Unread:
+        n_scans, n_bands, shape = 3, 1, (8, 9)
+
+        def scan(self, i):
+            raise AssertionError("no scan should be read without a blob")
+
+    assert blob_features(np.zeros((8, 9), dtype=np.int32), Unread()) == []
