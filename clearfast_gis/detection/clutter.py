@@ -2,10 +2,12 @@
 
 from __future__ import annotations
 
+import warnings
+
 import numpy as np
 from scipy import ndimage
 
-from clearfast_gis.parallel import thread_map
+from clearfast_gis.detection.stack import as_scan_stack, map_scans
 
 #: Scale of the local background a contrast is measured against, metres (an AP mine and its
 #: ring).
@@ -38,25 +40,28 @@ def image_clutter_k(image: np.ndarray, pixel_size_m: float, keep: np.ndarray | N
     float
         NaN when no cell is measured.
     """
-    img = np.asarray(image, dtype=np.float64)
-    ok = np.isfinite(img) if keep is None else np.isfinite(img) & keep
+    finite = np.isfinite(image)
+    ok = finite if keep is None else finite & keep
     if not ok.any():
         return float("nan")
     size = max(3, int(round(scale_m / pixel_size_m)) | 1)
-    filled = np.where(np.isfinite(img), img, np.median(img[np.isfinite(img)]))
+    img = np.asarray(image, dtype=np.float64)
+    # the medians select in place in temporaries of their own (the same order statistics)
+    filled = np.where(finite, img, np.median(img[finite], overwrite_input=True))
     v = (filled - ndimage.uniform_filter(filled, size=size, mode="nearest"))[ok]
-    return float(1.4826 * np.median(np.abs(v - np.median(v))))
+    np.abs(np.subtract(v, np.median(v), out=v), out=v)
+    return float(1.4826 * np.median(v, overwrite_input=True))
 
 
-def background_clutter_k(stack: np.ndarray, labels: np.ndarray, pixel_size_m: float,
-                         scale_m: float = CLUTTER_SCALE_M) -> float:
-    """Robust 1-sigma of the local contrast of mine-free background cells, K: the median
-    over scans of :func:`image_clutter_k` over the cells outside every anomaly.
+def background_levels(stack, labels: np.ndarray, pixel_size_m: float,
+                      scale_m: float = CLUTTER_SCALE_M) -> tuple[np.ndarray, float]:
+    """The mine-free background of every scan, in one pass over the stack (band 0 of each
+    scan, read scan by scan: :mod:`clearfast_gis.detection.stack`).
 
     Parameters
     ----------
-    stack : ndarray, shape (S, H, W)
-        Apparent temperature per scan (one band), K or degrees C; NaN outside the footprint.
+    stack : ScanStack, or ndarray (S, H, W) or (S, B, H, W)
+        Apparent temperature per scan, K or degrees C; NaN outside the footprint.
     labels : ndarray of int, shape (H, W)
         Anomaly labels (0 = background).
     pixel_size_m : float
@@ -64,12 +69,30 @@ def background_clutter_k(stack: np.ndarray, labels: np.ndarray, pixel_size_m: fl
 
     Returns
     -------
-    float
-        NaN when no scan has background cells.
+    median : float32 (S,)
+        Median over the background cells per scan (the stack's unit; NaN without any).
+    clutter : float
+        Robust 1-sigma of the local contrast of the background cells, K: the median over
+        scans of :func:`image_clutter_k` over the cells outside every anomaly; NaN when no
+        scan has background cells.
     """
     background = labels == 0
-    # the box filter releases the GIL: the scans on threads, combined in scan order
-    spreads = [v for v in thread_map(
-        lambda band: image_clutter_k(band, pixel_size_m, background, scale_m), stack)
-        if np.isfinite(v)]
-    return float(np.median(spreads)) if spreads else float("nan")
+
+    def one_scan(_scan: int, bands: np.ndarray) -> tuple[float, float]:
+        return (np.nanmedian(bands[0][background]),
+                image_clutter_k(bands[0], pixel_size_m, background, scale_m))
+
+    # a scan without background cells: NaN (the process's filter, so on the threads too)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", category=RuntimeWarning)
+        per_scan = list(map_scans(one_scan, as_scan_stack(stack)))
+    spreads = [v for _, v in per_scan if np.isfinite(v)]
+    return (np.array([m for m, _ in per_scan]),
+            float(np.median(spreads)) if spreads else float("nan"))
+
+
+def background_clutter_k(stack, labels: np.ndarray, pixel_size_m: float,
+                         scale_m: float = CLUTTER_SCALE_M) -> float:
+    """Robust 1-sigma of the local contrast of mine-free background cells, K (NaN when no
+    scan has background cells): the clutter of :func:`background_levels`, same parameters."""
+    return background_levels(stack, labels, pixel_size_m, scale_m)[1]

@@ -18,15 +18,52 @@ from scipy import ndimage
 
 from clearfast_gis.detection.morphology import disk_footprint
 from clearfast_gis.detection.multiscale import robust_sigma
-from clearfast_gis.parallel import thread_map
+from clearfast_gis.detection.stack import as_scan_stack, map_scans
 
 
-def compact_contrast(images: np.ndarray, d1_px: float) -> np.ndarray:
+def _compact_term(f: np.ndarray, kernel: np.ndarray) -> tuple[np.ndarray, np.ndarray] | None:
+    """One image's term of :func:`compact_contrast`: ``(where(ok, resp / sigma, 0), ok)``,
+    or None when the image does not count (too few cells, no spread)."""
+    ok = np.isfinite(f)
+    if ok.sum() < 9:
+        return None
+    filled = np.where(ok, f, np.median(f[ok])).astype(np.float32)
+    white = filled - cv2.morphologyEx(filled, cv2.MORPH_OPEN, kernel,
+                                      borderType=cv2.BORDER_REPLICATE)
+    black = cv2.morphologyEx(filled, cv2.MORPH_CLOSE, kernel,
+                             borderType=cv2.BORDER_REPLICATE) - filled
+    resp = np.maximum(white, black)
+    sigma = robust_sigma(np.where(ok, white - black, np.nan))
+    if not sigma > 0:
+        return None
+    return np.where(ok, resp / sigma, 0.0), ok
+
+
+class _CompactSum:
+    """The running sums of :func:`compact_contrast` over images of one shape, added in
+    order."""
+
+    def __init__(self, shape: tuple[int, int]):
+        self.total = np.zeros(shape, dtype=np.float64)
+        self.count = np.zeros(shape, dtype=np.int32)
+
+    def add(self, term: tuple[np.ndarray, np.ndarray] | None) -> None:
+        if term is not None:
+            self.total += term[0]
+            self.count += term[1]
+
+    def result(self) -> np.ndarray:
+        with np.errstate(invalid="ignore", divide="ignore"):
+            return np.where(self.count > 0, self.total / np.maximum(self.count, 1),
+                            np.nan).astype(np.float32)
+
+
+def compact_contrast(images, d1_px: float) -> np.ndarray:
     """Time-averaged contrast of objects narrower than D1, in units of each image's noise.
 
     Parameters
     ----------
-    images : float32 (K, H, W)
+    images : float32 (K, H, W), or an iterable of float32 (H, W)
         Apparent temperature (any unit), NaN = no data.
     d1_px : float
         Disk diameter D1, pixels.
@@ -38,28 +75,16 @@ def compact_contrast(images: np.ndarray, d1_px: float) -> np.ndarray:
         robust standard deviation of the image's top-hat; NaN where no image has data.
     """
     kernel = disk_footprint(d1_px).astype(np.uint8)
-    total = np.zeros(images.shape[1:], dtype=np.float64)
-    count = np.zeros(images.shape[1:], dtype=np.int32)
+    acc = None
     for f in images:
-        ok = np.isfinite(f)
-        if ok.sum() < 9:
-            continue
-        filled = np.where(ok, f, np.median(f[ok])).astype(np.float32)
-        white = filled - cv2.morphologyEx(filled, cv2.MORPH_OPEN, kernel,
-                                          borderType=cv2.BORDER_REPLICATE)
-        black = cv2.morphologyEx(filled, cv2.MORPH_CLOSE, kernel,
-                                 borderType=cv2.BORDER_REPLICATE) - filled
-        resp = np.maximum(white, black)
-        sigma = robust_sigma(np.where(ok, white - black, np.nan))
-        if not sigma > 0:
-            continue
-        total += np.where(ok, resp / sigma, 0.0)
-        count += ok
-    with np.errstate(invalid="ignore", divide="ignore"):
-        return np.where(count > 0, total / np.maximum(count, 1), np.nan).astype(np.float32)
+        acc = _CompactSum(f.shape) if acc is None else acc
+        acc.add(_compact_term(f, kernel))
+    if acc is None:
+        raise ValueError("no images")
+    return acc.result()
 
 
-def split_oversized(labels: np.ndarray, images: np.ndarray, d1_px: float, d2_px: float,
+def split_oversized(labels: np.ndarray, stack, d1_px: float, d2_px: float,
                     max_diameter_px: float, min_contrast: float = 4.0) -> np.ndarray:
     """Give the compact objects inside oversized blobs labels of their own.
 
@@ -67,8 +92,9 @@ def split_oversized(labels: np.ndarray, images: np.ndarray, d1_px: float, d2_px:
     ----------
     labels : int (H, W)
         Blobs (0 = background).
-    images : float32 (K, H, W)
-        The detector's images (scans x bands), NaN = no data.
+    stack : ScanStack, or float32 (K, H, W) or (N, B, H, W)
+        The detector's images (scans x bands), NaN = no data; read scan by scan, only the
+        windows around the oversized blobs kept (:mod:`clearfast_gis.detection.stack`).
     d1_px, d2_px : float
         Detector disks D1 and D2, pixels.
     max_diameter_px : float
@@ -95,10 +121,22 @@ def split_oversized(labels: np.ndarray, images: np.ndarray, d1_px: float, d2_px:
         r0, r1 = max(0, sl[0].start - margin), min(out.shape[0], sl[0].stop + margin)
         c0, c1 = max(0, sl[1].start - margin), min(out.shape[1], sl[1].stop + margin)
         searched.append((lab, (slice(r0, r1), slice(c0, c1))))
-    # the blobs' contrasts are independent (each reads only the images): on threads
-    contrasts = thread_map(lambda item: compact_contrast(images[(slice(None), *item[1])], d1_px),
-                           searched)
-    for (lab, crop), contrast in zip(searched, contrasts, strict=True):
+    if not searched:
+        return out
+    kernel = disk_footprint(d1_px).astype(np.uint8)
+    sums = [_CompactSum(out[crop].shape) for _, crop in searched]
+
+    # each scan's terms on its reading thread; added in scan and band order
+    def terms(_scan: int, bands: np.ndarray) -> list[list]:
+        return [[_compact_term(image[crop], kernel) for _, crop in searched]
+                for image in bands]
+
+    for per_band in map_scans(terms, as_scan_stack(stack)):
+        for per_blob in per_band:
+            for acc, term in zip(sums, per_blob, strict=True):
+                acc.add(term)
+    for (lab, crop), acc in zip(searched, sums, strict=True):
+        contrast = acc.result()
         inside = out[crop] == lab  # new labels never equal an original one
         cores, n = ndimage.label((contrast >= min_contrast) & inside,
                                  structure=np.ones((3, 3)))

@@ -20,6 +20,7 @@ through the separate ``L_i`` maps. A multi-band stack (N, B, H, W) is treated as
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
 
 import numpy as np
@@ -31,11 +32,12 @@ from clearfast_gis.detection.morphology import (
     top_hat_by_reconstruction,
 )
 from clearfast_gis.detection.reconstruction import binary_reconstruction
+from clearfast_gis.detection.stack import as_scan_stack, map_scans
 from clearfast_gis.detection.stretch import stretch_threshold
 from clearfast_gis.parallel import thread_imap
 from clearfast_gis.progress import NULL_PROGRESS, Progress
 
-__all__ = ["DetectionResult", "as_image_stack", "count_finite", "detect_anomalies",
+__all__ = ["DetectionResult", "count_finite", "detect_anomalies",
            "unpack_bits"]
 
 _EIGHT = np.ones((3, 3), dtype=bool)
@@ -55,10 +57,13 @@ class DetectionResult:
         8-connected labels of ``mask`` (0 = background), ids 1..n_anomalies.
     votes : ndarray of int32 (H, W)
         ``sum_i O_i`` (hot or cold, per image), the majority-vote count.
-    scan_hot, scan_cold : ndarray of bool (N, H, W)
-        The per-scan reconstructed maps L_i (OR over bands).
-    level, gamma : float
+    scan_hot_bits, scan_cold_bits : ndarray of uint8 (N, H, ceil(W / 8))
+        The per-scan reconstructed maps L_i (OR over bands), rows packed by
+        ``np.packbits(axis=-1)`` (:attr:`scan_hot`, :meth:`support` unpack them).
+    level, gamma : float or float (H, W)
         The vote level used and the combination threshold (None = OR).
+    covered : ndarray of int32 (H, W)
+        Images with data at each pixel.
     """
 
     mask_hot: np.ndarray
@@ -66,33 +71,36 @@ class DetectionResult:
     mask: np.ndarray
     labels: np.ndarray
     votes: np.ndarray
-    scan_hot: np.ndarray
-    scan_cold: np.ndarray
-    level: float
-    gamma: float | None
+    scan_hot_bits: np.ndarray
+    scan_cold_bits: np.ndarray
+    level: float | np.ndarray
+    gamma: float | np.ndarray | None
+    covered: np.ndarray
 
     @property
     def n_anomalies(self) -> int:
         """Number of labelled anomalies."""
         return int(self.labels.max(initial=0))
 
+    @property
+    def scan_hot(self) -> np.ndarray:
+        """The hot L_i maps, bool (N, H, W)."""
+        return unpack_bits(self.scan_hot_bits, self.labels.shape[1])
 
-def as_image_stack(stack: np.ndarray) -> tuple[np.ndarray, int, int]:
-    """View a (H, W), (N, H, W) or (N, B, H, W) stack as float32 (N*B, H, W); returns
-    ``(images, N, B)``."""
-    a = np.asarray(stack)
-    if a.ndim == 2:
-        a = a[None]
-    if a.ndim == 3:
-        n, b = a.shape[0], 1
-    elif a.ndim == 4:
-        n, b = a.shape[0], a.shape[1]
-    else:
-        raise ValueError(f"stack must be (H, W), (N, H, W) or (N, B, H, W), got {a.shape}")
-    if a.shape[-1] < 1 or a.shape[-2] < 1 or n < 1 or b < 1:
-        raise ValueError(f"empty stack {a.shape}")
-    images = np.asarray(a.reshape(n * b, a.shape[-2], a.shape[-1]), dtype=np.float32)
-    return images, n, b
+    @property
+    def scan_cold(self) -> np.ndarray:
+        """The cold L_i maps, bool (N, H, W)."""
+        return unpack_bits(self.scan_cold_bits, self.labels.shape[1])
+
+    def support(self, rows: np.ndarray, cols: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Whether each scan's hot and cold L_i touch the pixels ``(rows, cols)``: two bool
+        (N,)."""
+        shift = (7 - cols % 8).astype(np.uint8)
+
+        def touched(bits: np.ndarray) -> np.ndarray:
+            return ((bits[:, rows, cols // 8] >> shift) & 1).astype(bool).any(axis=1)
+
+        return touched(self.scan_hot_bits), touched(self.scan_cold_bits)
 
 
 def unpack_bits(packed: np.ndarray, width: int) -> np.ndarray:
@@ -118,21 +126,25 @@ def count_finite(images) -> np.ndarray:
 
 
 def detect_anomalies(
-    stack: np.ndarray,
+    stack,
     d1_px: float,
     d2_px: float,
     epsilon: float = 0.01,
-    level: float | np.ndarray | None = None,
-    gamma: float | np.ndarray | None = None,
+    level: float | np.ndarray | Callable[[np.ndarray], np.ndarray] | None = None,
+    gamma: float | np.ndarray | Callable[[np.ndarray], np.ndarray] | None = None,
     polarity: str = "both",
     progress: Progress = NULL_PROGRESS,
-    ceiling: float | np.ndarray | None = None,
+    ceiling: float | np.ndarray | Callable[[np.ndarray], float] | None = None,
 ) -> DetectionResult:
     """Detect hot and cold anomalies on a temporal (multi-band) stack.
 
+    The images are read once, scan by scan (:func:`clearfast_gis.detection.stack.map_scans`):
+    memory holds the scans being filtered, the thresholded hats G_i one bit a pixel and the
+    per-scan maps L_i one bit a pixel, never the stack.
+
     Parameters
     ----------
-    stack : ndarray (N, H, W) or (N, B, H, W) (or (H, W) for one image)
+    stack : ScanStack, or ndarray (N, H, W) or (N, B, H, W) (or (H, W) for one image)
         Apparent temperature per scan (and band), float32, NaN = no-data.
     d1_px : float
         Top-hat disk diameter D1 in pixels (larger than the largest expected object). The
@@ -142,21 +154,23 @@ def detect_anomalies(
         into are removed.
     epsilon : float
         Histogram-stretch fraction (paper §4.2).
-    level : float or float (H, W), optional
+    level : float, float (H, W) or callable, optional
         Majority-vote level l; a pixel is kept where ``sum_i O_i >= l``. Default ``N*B / 2``.
-        A map gives each pixel its own level (e.g. relative to the images that cover it when
-        the footprint changes from scan to scan).
-    gamma : float or float (H, W), optional
-        Combination threshold: ``R = sum_i L_i >= gamma``; None combines with OR.
+        A map gives each pixel its own level; a function of the coverage count (int32 (H, W),
+        images with data at each pixel) gives the map once the images are read (e.g. relative
+        to the images that cover each pixel when the footprint changes from scan to scan).
+    gamma : float, float (H, W) or callable, optional
+        Combination threshold: ``R = sum_i L_i >= gamma`` (a function of the coverage count
+        as for ``level``); None combines with OR.
     polarity : {'both', 'hot', 'cold'}
         Which anomalies to look for.
     progress : Progress
         Reports one step per image.
-    ceiling : float or ndarray (N*B,), optional
-        Highest cut of step 2 per image, in the stack's units (K): a pixel of the hat image
-        is set above ``min(stretch cut, ceiling)``
-        (:func:`clearfast_gis.detection.stretch.stretch_threshold`); None: the paper's
-        stretch alone.
+    ceiling : float, ndarray (N*B,) or callable, optional
+        Highest cut of step 2 per image, in the stack's units (K), or a function of the image
+        (float32 (H, W)) giving it: a pixel of the hat image is set above
+        ``min(stretch cut, ceiling)`` (:func:`clearfast_gis.detection.stretch.stretch_threshold`);
+        None: the paper's stretch alone.
 
     Returns
     -------
@@ -166,55 +180,75 @@ def detect_anomalies(
         raise ValueError(f"polarity must be 'both', 'hot' or 'cold', got {polarity!r}")
     if not d1_px > d2_px >= 1:
         raise ValueError(f"need D1 > D2 >= 1 pixel, got D1={d1_px}, D2={d2_px}")
-    images, n, b = as_image_stack(stack)
+    source = as_scan_stack(stack)
+    n, b, shape = source.n_scans, source.n_bands, source.shape
     k = n * b
-    ceilings = np.broadcast_to(np.full(1, np.nan) if ceiling is None
-                               else np.asarray(ceiling, dtype=np.float64), (k,))
-    level = k / 2.0 if level is None else (
-        np.asarray(level, dtype=np.float64) if np.ndim(level) else float(level))
-    shape = images.shape[1:]
+    if callable(ceiling):
+        def cut_of(_i: int, image: np.ndarray) -> float:
+            return float(ceiling(image))
+    else:
+        ceilings = np.broadcast_to(np.full(1, np.nan) if ceiling is None
+                                   else np.asarray(ceiling, dtype=np.float64), (k,))
+
+        def cut_of(i: int, _image: np.ndarray) -> float:
+            return float(ceilings[i])
     want = {"hot": polarity in ("both", "hot"), "cold": polarity in ("both", "cold")}
     # thresholded hats G_i are kept (the reconstruction of the final mask needs them), one bit
     # a pixel; the openings O_i and the reconstructions L_i are folded into counts as they
     # come, so that memory holds two (K, H, W / 8) packed stacks
-    g = {p: np.zeros((k, shape[0], (shape[1] + 7) // 8), dtype=np.uint8)
-         for p in ("hot", "cold")}
+    packed_w = (shape[1] + 7) // 8
+    g = {p: np.zeros((k, shape[0], packed_w), dtype=np.uint8) for p in ("hot", "cold")}
     votes = np.zeros(shape, dtype=np.int32)
+    covered = np.zeros(shape, dtype=np.int32)
     progress.start("detect", k)
 
-    def one_image(i: int) -> np.ndarray:
-        seen = np.zeros(shape, dtype=bool)
-        for p, hat in (("hot", top_hat_by_reconstruction),
-                       ("cold", bottom_hat_by_reconstruction)):
-            if want[p]:
-                gi = stretch_threshold(hat(images[i], d1_px), epsilon,
-                                       ceiling=float(ceilings[i]))
-                g[p][i] = np.packbits(gi, axis=-1)
-                seen |= binary_opening_by_reconstruction(gi, d2_px)
-        progress.advance()
-        return seen
+    def one_scan(scan: int, bands: np.ndarray) -> tuple[list[np.ndarray], np.ndarray]:
+        seen_per_band, finite = [], np.zeros(shape, dtype=np.int32)
+        for j, image in enumerate(bands):
+            i = scan * b + j
+            cut = cut_of(i, image)
+            seen = np.zeros(shape, dtype=bool)
+            for p, hat in (("hot", top_hat_by_reconstruction),
+                           ("cold", bottom_hat_by_reconstruction)):
+                if want[p]:
+                    gi = stretch_threshold(hat(image, d1_px), epsilon, ceiling=cut)
+                    g[p][i] = np.packbits(gi, axis=-1)
+                    seen |= binary_opening_by_reconstruction(gi, d2_px)
+            finite += np.isfinite(image)
+            seen_per_band.append(seen)
+            progress.advance()
+        return seen_per_band, finite
 
-    for seen in thread_imap(one_image, range(k)):
-        votes += seen
+    for seen_per_band, finite in map_scans(one_scan, source):
+        for seen in seen_per_band:
+            votes += seen
+        covered += finite
     progress.close()
+    level = k / 2.0 if level is None else level(covered) if callable(level) else (
+        np.asarray(level, dtype=np.float64) if np.ndim(level) else float(level))
+    if callable(gamma):
+        gamma = gamma(covered)
     m = votes >= level
-    out = {}
-    scans = {}
+    out, scans = {}, {}
     for p in ("hot", "cold"):
         count = np.zeros(shape, dtype=np.int32)
-        scans[p] = np.zeros((n, *shape), dtype=bool)
+        scans[p] = np.zeros((n, shape[0], packed_w), dtype=np.uint8)
         if want[p] and m.any():
             lis = thread_imap(lambda i, p=p: binary_reconstruction(m, unpack_bits(
                 g[p][i], shape[1])), range(k))
+            scan_map = np.zeros(shape, dtype=bool)
             for i, li in enumerate(lis):
                 count += li
-                scans[p][i // b] |= li
+                scan_map |= li
+                if i % b == b - 1:  # the scan's last band: its map is complete
+                    scans[p][i // b] = np.packbits(scan_map, axis=-1)
+                    scan_map[:] = False
         out[p] = count > 0 if gamma is None else count >= gamma
     mask = out["hot"] | out["cold"]
     labels, _ = ndimage.label(mask, structure=_EIGHT)
     return DetectionResult(
         mask_hot=out["hot"], mask_cold=out["cold"], mask=mask,
         labels=labels.astype(np.int32), votes=votes,
-        scan_hot=scans["hot"], scan_cold=scans["cold"],
-        level=level, gamma=gamma,
+        scan_hot_bits=scans["hot"], scan_cold_bits=scans["cold"],
+        level=level, gamma=gamma, covered=covered,
     )

@@ -41,7 +41,8 @@ from dataclasses import dataclass, field
 import numpy as np
 from skimage.measure import regionprops
 
-from clearfast_gis.detection.detector import DetectionResult, as_image_stack, count_finite
+from clearfast_gis.detection.detector import DetectionResult, count_finite
+from clearfast_gis.detection.stack import as_scan_stack, iter_images, map_scans
 from clearfast_gis.solar import local_solar_hour
 
 __all__ = ["AnomalyFeatures", "blob_features", "features_table", "summary_polarity"]
@@ -139,46 +140,68 @@ def _ring_pixels(labels: np.ndarray, valid: np.ndarray, row: float, col: float,
     return rr[sel], cc[sel]
 
 
-def half_max_footprint(cube: np.ndarray, labels: np.ndarray, label: int, row: float,
-                       col: float, ring: np.ndarray, bbox: tuple[int, int, int, int],
-                       grow_px: int) -> tuple[np.ndarray, np.ndarray]:
+def footprint_window(bbox: tuple[int, int, int, int], grow_px: int,
+                     shape: tuple[int, int]) -> tuple[int, int, int, int]:
+    """Where :func:`half_max_footprint` searches: the blob's box ``(min_row, min_col,
+    max_row, max_col)`` grown by ``grow_px``, clipped to the image; ``(r0, r1, c0, c1)``."""
+    h, w = shape
+    return (max(0, bbox[0] - grow_px), min(h, bbox[2] + grow_px),
+            max(0, bbox[1] - grow_px), min(w, bbox[3] + grow_px))
+
+
+class _SquareMean:
+    """Running ``nanmean`` over images of the squared deviation from each image's ring
+    (float32 sums added image by image, the same bits as ``np.nanmean(axis=0)``)."""
+
+    def __init__(self, shape: tuple[int, int]):
+        self.total = np.zeros(shape, dtype=np.float32)
+        self.count = np.zeros(shape, dtype=np.intp)
+
+    def add(self, deviation: np.ndarray) -> None:
+        """``deviation`` float32 (B, h, w): one scan's bands minus their ring means."""
+        for d in deviation:
+            sq = d * d
+            missing = np.isnan(sq)
+            self.total += np.where(missing, np.float32(0.0), sq)
+            self.count += ~missing
+
+    def rms(self) -> np.ndarray:
+        """``sqrt(mean)``, float32 (h, w); NaN where no image had data."""
+        with np.errstate(invalid="ignore", divide="ignore"):
+            mean = np.divide(self.total, self.count, out=self.total.copy(), casting="unsafe")
+        return np.sqrt(mean)
+
+
+def half_max_footprint(amp: np.ndarray, own: np.ndarray, origin: tuple[int, int]
+                       ) -> tuple[np.ndarray, np.ndarray]:
     """Pixels of a blob's half-maximum thermal footprint.
 
     The amplitude of each pixel is its RMS deviation from the blob's background ring over
     the scans and bands, ``S = sqrt(mean_i (T_i - ring_i)^2)``; the footprint is the
     connected region around the blob's strongest pixel where ``S`` exceeds half the blob's
     peak amplitude (the 95th percentile of ``S`` in the blob, robust to noise), searched within
-    the blob's box grown by ``grow_px``. For a disc seen through a moderate blur its area is
-    the disc's, whereas the detector's thresholded blob also takes in part of the blur and of the
-    thermal halo.
+    the blob's box grown by its equivalent radius (:func:`footprint_window`). For a disc seen
+    through a moderate blur its area is the disc's, whereas the detector's thresholded blob
+    also takes in part of the blur and of the thermal halo.
 
     Parameters
     ----------
-    cube : float (N, B, H, W)
-    labels : int (H, W)
-    label : int
-    row, col : float
-        Blob centroid, pixels (kept for the interface; the seed is the amplitude peak).
-    ring : float (N, B)
-        Background ring mean per scan and band (NaN: that scan and band are left out).
-    bbox : (min_row, min_col, max_row, max_col)
-    grow_px : int
+    amp : float (h, w)
+        ``S`` over the search window, K (NaN where no image had data).
+    own : bool (h, w)
+        The blob's pixels in the window.
+    origin : (int, int)
+        Row and column of the window's first pixel in the image.
 
     Returns
     -------
     rows, cols : int arrays
-        The footprint's pixels (the blob's own pixels when no footprint is found).
+        The footprint's pixels in the image (the blob's own pixels when no footprint is
+        found).
     """
     from scipy import ndimage
 
-    h, w = labels.shape
-    r0, c0 = max(0, bbox[0] - grow_px), max(0, bbox[1] - grow_px)
-    r1, c1 = min(h, bbox[2] + grow_px), min(w, bbox[3] + grow_px)
-    sub = cube[:, :, r0:r1, c0:c1] - ring[:, :, None, None]
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore", category=RuntimeWarning)
-        amp = np.sqrt(np.nanmean(sub.reshape(-1, r1 - r0, c1 - c0) ** 2, axis=0))
-    own = labels[r0:r1, c0:c1] == label
+    r0, c0 = origin
     vals = amp[own & np.isfinite(amp)]
     if vals.size == 0:
         rr, cc = np.nonzero(own)
@@ -201,9 +224,38 @@ def half_max_footprint(cube: np.ndarray, labels: np.ndarray, label: int, row: fl
     return rr + r0, cc + c0
 
 
+@dataclass
+class _Blob:
+    """One labelled blob's geometry and the series measured on it, scan by scan."""
+
+    region: object
+    rows: np.ndarray
+    cols: np.ndarray
+    row: float
+    col: float
+    r_eq: float
+    ring_rows: np.ndarray
+    ring_cols: np.ndarray
+    window: tuple[int, int, int, int]
+    ring: np.ndarray
+    noise: np.ndarray
+    amp: _SquareMean
+    centre: np.ndarray
+    fr: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=np.intp))
+    fc: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=np.intp))
+
+
+def _nan_stats(values: np.ndarray, n_min: int, stat) -> np.ndarray:
+    """``stat(values, axis=1)`` of (B, P) values (NaN ignored), NaN (B,) below ``n_min``
+    values."""
+    if values.shape[1] < n_min:
+        return np.full(values.shape[0], np.nan, dtype=np.float32)
+    return stat(values, axis=1)
+
+
 def blob_features(
     labels: np.ndarray,
-    stack: np.ndarray,
+    stack,
     times_s: np.ndarray | None = None,
     transform=None,
     pixel_size_m: float | None = None,
@@ -214,11 +266,16 @@ def blob_features(
 ) -> list[AnomalyFeatures]:
     """Measure every labelled anomaly.
 
+    The stack is read twice, scan by scan (:mod:`clearfast_gis.detection.stack`): first the
+    ring means and spreads and the running RMS amplitude around each blob, then the centre
+    means over each blob's half-maximum footprint. Memory holds per blob its series (N, B)
+    and two arrays the size of its search window, never the stack.
+
     Parameters
     ----------
     labels : ndarray of int (H, W)
         Anomaly labels (0 = background), e.g. ``DetectionResult.labels``.
-    stack : ndarray (H, W), (N, H, W) or (N, B, H, W)
+    stack : ScanStack, or ndarray (H, W), (N, H, W) or (N, B, H, W)
         Apparent temperature (K or degrees C), NaN = no-data.
     times_s : ndarray (N,), optional
         Scan times, UTC epoch seconds (for the summary polarity).
@@ -228,7 +285,8 @@ def blob_features(
         Ground pixel size in metres; default ``sqrt(|det(transform)|)`` when a transform is
         given. Without either, the metric fields are NaN.
     detection : DetectionResult, optional
-        Gives the per-scan support (hot and cold L_i maps).
+        The detector's result on this stack: the per-scan support (hot and cold L_i maps)
+        and the coverage count (otherwise counted in a pass of its own).
     longitude_deg : float, optional
         Site longitude for the local solar hour.
     ring_radii : (float, float)
@@ -241,81 +299,115 @@ def blob_features(
     list of AnomalyFeatures, in label order.
     """
     labels = np.asarray(labels)
-    images, n, b = as_image_stack(stack)
-    if images.shape[1:] != labels.shape:
-        raise ValueError(f"labels {labels.shape} and stack {images.shape[1:]} differ in shape")
+    source = as_scan_stack(stack)
+    n, b = source.n_scans, source.n_bands
+    if source.shape != labels.shape:
+        raise ValueError(f"labels {labels.shape} and stack {source.shape} differ in shape")
     if times_s is not None and len(np.atleast_1d(times_s)) != n:
         raise ValueError(f"{len(np.atleast_1d(times_s))} times for {n} scans")
     if noise not in ("ring", "image"):
         raise ValueError(f"noise must be 'ring' or 'image', got {noise!r}")
-    cube = images.reshape(n, b, *labels.shape)
-    # a pixel seen in some scans only (a footprint that moves, paper §6) still serves the
-    # ring of those scans: every mean below is over the scans that saw it
-    valid = count_finite(images) > 0
-    image_noise = None
-    if noise == "image":  # per image, so that no copy of the whole stack is made
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore", category=RuntimeWarning)
-            image_noise = np.array([[np.nanstd(cube[i, j]) for j in range(b)]
-                                    for i in range(n)])
     if pixel_size_m is None and transform is not None:
         pixel_size_m = float(np.sqrt(abs(transform.a * transform.e - transform.b * transform.d)))
     ps = float("nan") if pixel_size_m is None else float(pixel_size_m)
-    out = []
-    for region in regionprops(labels.astype(np.int32)):
-        rows, cols = region.coords[:, 0], region.coords[:, 1]
+    regions = regionprops(labels.astype(np.int32))
+    if not regions:
+        return []
+    # a pixel seen in some scans only (a footprint that moves, paper §6) still serves the
+    # ring of those scans: every mean below is over the scans that saw it
+    covered = detection.covered if detection is not None else count_finite(
+        iter_images(source))
+    valid = covered > 0
+    blobs = []
+    for region in regions:
         row, col = (float(v) for v in region.centroid)
-        area = int(region.area)
-        diameter = float(np.sqrt(4.0 * area / np.pi))
-        circ, ratio, compact = _circularity(region)
-        r_eq = diameter / 2.0
+        r_eq = float(np.sqrt(4.0 * int(region.area) / np.pi)) / 2.0
         r_in = max(ring_radii[0] * r_eq, r_eq + 1.0)
         r_out = max(ring_radii[1] * r_eq, r_in + 2.0)
         rr, cc = _ring_pixels(labels, valid, row, col, r_in, r_out)
-        with np.errstate(invalid="ignore"), warnings.catch_warnings():
-            warnings.simplefilter("ignore", category=RuntimeWarning)
-            centre = np.nanmean(cube[:, :, rows, cols], axis=2)
-            ring = np.nanmean(cube[:, :, rr, cc], axis=2) if rr.size else np.full((n, b), np.nan)
-            noise_k = (np.nanstd(cube[:, :, rr, cc], axis=2) if rr.size > 1
-                       else np.full((n, b), np.nan))
-        fr, fc = half_max_footprint(cube, labels, int(region.label), row, col,
-                                    ring, region.bbox,
-                                    grow_px=int(np.ceil(r_eq)))
-        fwhm_diameter = float(np.sqrt(4.0 * fr.size / np.pi))
-        row, col = float(fr.mean()), float(fc.mean())
-        with np.errstate(invalid="ignore"), warnings.catch_warnings():
-            warnings.simplefilter("ignore", category=RuntimeWarning)
-            centre = np.nanmean(cube[:, :, fr, fc], axis=2)
-        contrast = centre - ring
-        sigma = noise_k if noise == "ring" else image_noise
-        cnr = np.abs(contrast) / np.maximum(sigma, 1e-6)
-        with warnings.catch_warnings():  # a scan that did not see the blob: an all-NaN row
-            warnings.simplefilter("ignore", category=RuntimeWarning)
-            c_scan = np.nanmean(contrast, axis=1) if b > 1 else contrast[:, 0]
-            cnr_scan = np.nanmax(cnr, axis=1)
-        pol = _polarity(detection, rows, cols, c_scan, cnr_scan, n)
-        seen = pol != 0
-        support = cnr_scan[seen] if seen.any() else cnr_scan
-        support = support[np.isfinite(support)]
-        shape_size = (0.5 + 0.5 * circ) * np.log10(1.0 + area)
-        score = float(np.median(support)) * shape_size if support.size else 0.0
-        x = y = float("nan")
-        if transform is not None:
-            u, v = col + 0.5, row + 0.5
-            x = transform.a * u + transform.b * v + transform.c
-            y = transform.d * u + transform.e * v + transform.f
-        squeeze = (lambda a: a[:, 0]) if b == 1 else (lambda a: a)
-        out.append(AnomalyFeatures(
-            id=int(region.label), row=row, col=col, x=float(x), y=float(y),
-            area_px=area, area_m2=area * ps**2, diameter_px=fwhm_diameter,
-            diameter_m=fwhm_diameter * ps, blob_diameter_px=diameter,
-            circularity=circ, axis_ratio=ratio, compactness=compact,
-            polarity_per_scan=pol, polarity=summary_polarity(pol, times_s, longitude_deg),
-            n_scans=int(seen.sum()), centre_k=squeeze(centre), ring_k=squeeze(ring),
-            contrast_k=squeeze(contrast), noise_k=squeeze(noise_k), score=score,
-            bbox=tuple(int(v) for v in region.bbox),
-        ))
-    return out
+        window = footprint_window(region.bbox, int(np.ceil(r_eq)), labels.shape)
+        blobs.append(_Blob(
+            region, region.coords[:, 0], region.coords[:, 1], row, col, r_eq, rr, cc, window,
+            np.full((n, b), np.nan, dtype=np.float32), np.full((n, b), np.nan, dtype=np.float32),
+            _SquareMean((window[1] - window[0], window[3] - window[2])),
+            np.full((n, b), np.nan, dtype=np.float32)))
+
+    def rings(_scan: int, bands: np.ndarray) -> tuple[list, np.ndarray | None]:
+        out = []
+        image_noise = np.array([np.nanstd(x) for x in bands]) if noise == "image" else None
+        for blob in blobs:
+            around = bands[:, blob.ring_rows, blob.ring_cols]
+            ring = _nan_stats(around, 1, np.nanmean)
+            r0, r1, c0, c1 = blob.window
+            out.append((ring, _nan_stats(around, 2, np.nanstd),
+                        bands[:, r0:r1, c0:c1] - ring[:, None, None]))
+        return out, image_noise
+
+    def centres(_scan: int, bands: np.ndarray) -> list[np.ndarray]:
+        return [np.nanmean(bands[:, blob.fr, blob.fc], axis=1) for blob in blobs]
+
+    image_noise = np.full((n, b), np.nan, dtype=np.float32)
+    # a scan that did not see a blob or its ring gives NaN; the filter is the process's, so
+    # it holds on the reading threads too (set here, on the calling thread, around each pass)
+    with np.errstate(invalid="ignore"), warnings.catch_warnings():
+        warnings.simplefilter("ignore", category=RuntimeWarning)
+        for i, (per_blob, scan_noise) in enumerate(map_scans(rings, source)):
+            for blob, (ring, spread, deviation) in zip(blobs, per_blob, strict=True):
+                blob.ring[i], blob.noise[i] = ring, spread
+                blob.amp.add(deviation)
+            if scan_noise is not None:
+                image_noise[i] = scan_noise
+        for blob in blobs:
+            r0, r1, c0, c1 = blob.window
+            own = labels[r0:r1, c0:c1] == blob.region.label
+            blob.fr, blob.fc = half_max_footprint(blob.amp.rms(), own, (r0, c0))
+        for i, per_blob in enumerate(map_scans(centres, source)):
+            for blob, centre in zip(blobs, per_blob, strict=True):
+                blob.centre[i] = centre
+    return [_features(blob, n, b, ps, transform, times_s, longitude_deg, detection,
+                      image_noise if noise == "image" else None) for blob in blobs]
+
+
+def _features(blob: _Blob, n: int, b: int, ps: float, transform, times_s, longitude_deg,
+              detection: DetectionResult | None, image_noise: np.ndarray | None
+              ) -> AnomalyFeatures:
+    """One blob's :class:`AnomalyFeatures` from its measured series."""
+    region = blob.region
+    area = int(region.area)
+    diameter = 2.0 * blob.r_eq
+    circ, ratio, compact = _circularity(region)
+    fwhm_diameter = float(np.sqrt(4.0 * blob.fr.size / np.pi))
+    row, col = float(blob.fr.mean()), float(blob.fc.mean())
+    centre, ring, noise_k = blob.centre, blob.ring, blob.noise
+    contrast = centre - ring
+    sigma = noise_k if image_noise is None else image_noise
+    cnr = np.abs(contrast) / np.maximum(sigma, 1e-6)
+    with warnings.catch_warnings():  # a scan that did not see the blob: an all-NaN row
+        warnings.simplefilter("ignore", category=RuntimeWarning)
+        c_scan = np.nanmean(contrast, axis=1) if b > 1 else contrast[:, 0]
+        cnr_scan = np.nanmax(cnr, axis=1)
+    pol = _polarity(detection, blob.rows, blob.cols, c_scan, cnr_scan, n)
+    seen = pol != 0
+    support = cnr_scan[seen] if seen.any() else cnr_scan
+    support = support[np.isfinite(support)]
+    shape_size = (0.5 + 0.5 * circ) * np.log10(1.0 + area)
+    score = float(np.median(support)) * shape_size if support.size else 0.0
+    x = y = float("nan")
+    if transform is not None:
+        u, v = col + 0.5, row + 0.5
+        x = transform.a * u + transform.b * v + transform.c
+        y = transform.d * u + transform.e * v + transform.f
+    squeeze = (lambda a: a[:, 0]) if b == 1 else (lambda a: a)
+    return AnomalyFeatures(
+        id=int(region.label), row=row, col=col, x=float(x), y=float(y),
+        area_px=area, area_m2=area * ps**2, diameter_px=fwhm_diameter,
+        diameter_m=fwhm_diameter * ps, blob_diameter_px=diameter,
+        circularity=circ, axis_ratio=ratio, compactness=compact,
+        polarity_per_scan=pol, polarity=summary_polarity(pol, times_s, longitude_deg),
+        n_scans=int(seen.sum()), centre_k=squeeze(centre), ring_k=squeeze(ring),
+        contrast_k=squeeze(contrast), noise_k=squeeze(noise_k), score=score,
+        bbox=tuple(int(v) for v in region.bbox),
+    )
 
 
 def _polarity(detection: DetectionResult | None, rows: np.ndarray, cols: np.ndarray,
@@ -323,8 +415,7 @@ def _polarity(detection: DetectionResult | None, rows: np.ndarray, cols: np.ndar
     sign = np.sign(np.nan_to_num(contrast)).astype(np.int8)
     if detection is None:
         return np.where(np.nan_to_num(cnr) >= 2.0, sign, 0).astype(np.int8)
-    hot = detection.scan_hot[:, rows, cols].any(axis=1)
-    cold = detection.scan_cold[:, rows, cols].any(axis=1)
+    hot, cold = detection.support(rows, cols)
     pol = np.zeros(n, dtype=np.int8)
     pol[hot & ~cold] = 1
     pol[cold & ~hot] = -1

@@ -9,6 +9,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from clearfast_gis.detection.features import AnomalyFeatures
+from clearfast_gis.detection.stack import as_scan_stack, map_scans
 
 
 @dataclass(frozen=True)
@@ -72,15 +73,16 @@ def split_markers(features: list[AnomalyFeatures], marker_ids: list[str],
     return [f for f, m in zip(features, is_marker, strict=True) if not m], matches
 
 
-def markers_in_mosaics(stack_c: np.ndarray, grid, marker_ids: list[str],
+def markers_in_mosaics(stack_c, grid, marker_ids: list[str],
                        marker_xy: np.ndarray) -> list[MarkerMatch]:
     """Where each surveyed marker appears in the mosaics: the median over the scans of its
     contrast-weighted centroid (:func:`clearfast_gis.mosaic.markers.locate_marker`).
 
     Parameters
     ----------
-    stack_c : float32 (N, B, H, W)
-        Mosaics, degrees C.
+    stack_c : ScanStack or float32 (N, B, H, W)
+        Mosaics, degrees C (band 0 searched; read scan by scan,
+        :mod:`clearfast_gis.detection.stack`).
     grid : GroundGrid
     marker_ids : list of str
     marker_xy : float (M, 2)
@@ -88,11 +90,18 @@ def markers_in_mosaics(stack_c: np.ndarray, grid, marker_ids: list[str],
     """
     from clearfast_gis.mosaic.markers import locate_marker
 
+    if len(marker_ids) == 0:
+        return []
+    points = [(float(x), float(y)) for x, y in marker_xy]
+    found: list[list] = [[] for _ in points]
+    for per_marker in map_scans(lambda _, bands: [locate_marker(bands[0], grid, x, y)
+                                                  for x, y in points], as_scan_stack(stack_c)):
+        for where, p in zip(found, per_marker, strict=True):
+            if p is not None:
+                where.append(p)
     out = []
-    for mid, (x, y) in zip(marker_ids, marker_xy, strict=True):
-        found = [p for p in (locate_marker(stack_c[i, 0], grid, float(x), float(y))
-                             for i in range(stack_c.shape[0])) if p is not None]
-        if found:
-            fx, fy = np.median(np.array(found), axis=0)
-            out.append(MarkerMatch(str(mid), float(x), float(y), float(fx), float(fy)))
+    for mid, (x, y), where in zip(marker_ids, points, found, strict=True):
+        if where:
+            fx, fy = np.median(np.array(where), axis=0)
+            out.append(MarkerMatch(str(mid), x, y, float(fx), float(fy)))
     return out

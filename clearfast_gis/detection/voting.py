@@ -4,13 +4,14 @@
 from __future__ import annotations
 
 import dataclasses
+from functools import partial
 
 import numpy as np
 
 from clearfast_gis.detection import blob_features, detect_anomalies
 from clearfast_gis.detection.clutter import image_clutter_k
 from clearfast_gis.detection.compact import split_oversized
-from clearfast_gis.detection.detector import as_image_stack, count_finite
+from clearfast_gis.detection.stack import as_scan_stack
 from clearfast_gis.progress import NULL_PROGRESS, Progress
 
 
@@ -107,8 +108,9 @@ def detect_on_mosaics(stack_c: np.ndarray, times_s: np.ndarray, transform, pixel
 
     Parameters
     ----------
-    stack_c : float32 (N, B, H, W)
-        Co-registered mosaics, degrees C, NaN = no data.
+    stack_c : ScanStack or float32 (N, B, H, W)
+        Co-registered mosaics, degrees C, NaN = no data
+        (:mod:`clearfast_gis.detection.stack`: read scan by scan, never held whole).
     times_s : float64 (N,)
         Scan times, UTC epoch seconds.
     transform : affine.Affine
@@ -141,22 +143,21 @@ def detect_on_mosaics(stack_c: np.ndarray, times_s: np.ndarray, transform, pixel
         Relabelled 1..K in the order of ``features``.
     features : list of AnomalyFeatures
     """
-    images, n_scans, n_bands = as_image_stack(stack_c)
-    if level is None or (gamma is None and gamma_fraction is not None):
-        covered = count_finite(images)
-        if level is None:
-            level = coverage_level(level_fraction, covered, n_scans, n_bands)
-        if gamma is None and gamma_fraction is not None:
-            gamma = coverage_level(gamma_fraction, covered, n_scans, n_bands)
-    ceiling = None if threshold_snr is None else np.array(
-        [threshold_snr * image_clutter_k(img, pixel_size_m) for img in images])
-    det = detect_anomalies(stack_c, disk_px(d1_m, pixel_size_m), disk_px(d2_m, pixel_size_m),
+    source = as_scan_stack(stack_c)
+    n_scans, n_bands = source.n_scans, source.n_bands
+    if level is None:
+        level = partial(coverage_level, level_fraction, n_scans=n_scans, n_bands=n_bands)
+    if gamma is None and gamma_fraction is not None:
+        gamma = partial(coverage_level, gamma_fraction, n_scans=n_scans, n_bands=n_bands)
+    ceiling = None if threshold_snr is None else (
+        lambda img: threshold_snr * image_clutter_k(img, pixel_size_m))
+    det = detect_anomalies(source, disk_px(d1_m, pixel_size_m), disk_px(d2_m, pixel_size_m),
                            epsilon=epsilon, level=level, gamma=gamma, progress=progress,
                            ceiling=ceiling)
-    split = split_by_cores(det.labels, det.votes, level)
-    split = split_oversized(split, images, disk_px(d1_m, pixel_size_m),
+    split = split_by_cores(det.labels, det.votes, det.level)
+    split = split_oversized(split, source, disk_px(d1_m, pixel_size_m),
                             disk_px(d2_m, pixel_size_m), d1_m / pixel_size_m)
-    feats = blob_features(split, stack_c, times_s=times_s, transform=transform,
+    feats = blob_features(split, source, times_s=times_s, transform=transform,
                           pixel_size_m=pixel_size_m, detection=det, longitude_deg=longitude_deg)
     feats = sorted(feats, key=lambda f: (-f.score, f.id))[:max_anomalies]
     labels = np.zeros(split.shape, dtype=np.int32)

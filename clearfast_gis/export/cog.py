@@ -22,7 +22,7 @@ from affine import Affine
 from clearfast_gis.atomic import atomic_path
 from clearfast_gis.errors import InvalidInput
 from clearfast_gis.export.layout import mosaic_rel
-from clearfast_gis.parallel import n_threads, thread_map
+from clearfast_gis.parallel import n_threads
 from clearfast_gis.timeutil import format_utc, parse_utc
 
 SCAN_TIME_TAG = "CLEARFAST_SCAN_TIME_UTC"
@@ -224,16 +224,45 @@ def read_mosaic(path: str | os.PathLike) -> Mosaic:
     return Mosaic(bands, transform, int(epsg), descriptions, tags, scan_time_s, overviews)
 
 
-def read_mosaic_stack(products: Path, scans: list[int]) -> tuple[np.ndarray, Mosaic]:
-    """The scans' mosaics in a products folder as one float32 (N, B, H, W) array (filled as
-    they are read, on threads that decompress side by side, so that the stack is the only full
-    copy in memory) and the first mosaic's record."""
-    first = read_mosaic(products / mosaic_rel(scans[0]))
-    stack = np.empty((len(scans), *first.bands_c.shape), dtype=np.float32)
-    stack[0] = first.bands_c
+@dataclass(frozen=True)
+class CogStack:
+    """The scan mosaics of a products folder as a
+    :class:`~clearfast_gis.detection.stack.ScanStack`: a scan is read from its COG each time
+    it is asked for, so that no pass holds more than the scans it is reading.
 
-    def fill(k: int) -> None:
-        stack[k] = read_mosaic(products / mosaic_rel(scans[k])).bands_c
+    Attributes
+    ----------
+    paths : tuple of Path
+        One COG per scan, in scan order.
+    n_bands : int
+    shape : (int, int)
+        (H, W) of every mosaic.
+    transform : affine.Affine
+        The mosaics' grid transform.
+    """
 
-    thread_map(fill, range(1, len(scans)))
-    return stack, first
+    paths: tuple[Path, ...]
+    n_bands: int
+    shape: tuple[int, int]
+    transform: Affine
+
+    @property
+    def n_scans(self) -> int:
+        return len(self.paths)
+
+    def scan(self, i: int) -> np.ndarray:
+        """The bands of scan ``i``, float32 (B, H, W), degrees C."""
+        bands = read_mosaic(self.paths[i]).bands_c
+        if bands.shape != (self.n_bands, *self.shape):
+            raise InvalidInput(f"mosaic of shape {bands.shape}, the first scan's is "
+                               f"{(self.n_bands, *self.shape)}", self.paths[i])
+        return bands
+
+
+def mosaic_stack(products: Path, scans: list[int]) -> CogStack:
+    """The scans' mosaics in a products folder, in the order of ``scans``, as a
+    :class:`CogStack` (the first mosaic read once for its shape and transform)."""
+    paths = tuple(Path(products) / mosaic_rel(s) for s in scans)
+    first = read_mosaic(paths[0])
+    return CogStack(paths, int(first.bands_c.shape[0]), tuple(first.bands_c.shape[1:]),
+                    first.transform)

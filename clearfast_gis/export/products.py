@@ -109,7 +109,8 @@ def _pick_day_night(times_s: np.ndarray, lon_deg: float) -> tuple[int, int]:
 
 
 def write_anomaly_products(products: Path, ctx, survey, anomalies, records: list[dict],
-                           stack: np.ndarray, times_s: np.ndarray, transform, epsg: int,
+                           stack, valid: np.ndarray, times_s: np.ndarray, transform,
+                           epsg: int,
                            scan_records: dict[int, dict], report, options, fixq: dict,
                            timings: dict) -> dict:
     """Write the GeoPackage, the report and return the products manifest.
@@ -121,8 +122,10 @@ def write_anomaly_products(products: Path, ctx, survey, anomalies, records: list
     anomalies : AnomalySet
     records : list of dict
         ``suspects`` attribute records, in the order of ``anomalies.features``.
-    stack : float32 (N, B, H, W)
-        Mosaics, degrees C.
+    stack : ScanStack
+        Mosaics, degrees C (the report's day and night scans read from it).
+    valid : bool (H, W)
+        Cells seen by at least one scan (band 0), the footprint.
     times_s : float64 (N,)
         Scan times.
     transform : affine.Affine
@@ -159,13 +162,12 @@ def write_anomaly_products(products: Path, ctx, survey, anomalies, records: list
     anomalies_layer = gpd.GeoDataFrame(
         every.drop(columns="geometry").reset_index(drop=True),
         geometry=gpd.GeoSeries(outline_geoms, crs=crs), crs=crs)
-    valid = np.any(np.isfinite(stack[:, 0]), axis=0)
     footprint_m2 = float(valid.sum() * pixel * pixel)
     curve = expected_operating_curve(np.array([r["p_mine"] for r in ranked]), footprint_m2)
     footprint = gpd.GeoDataFrame(
         {"survey_id": [survey.manifest["survey_id"]],
          "area_m2": [footprint_m2],
-         "n_scans": [int(stack.shape[0])]},
+         "n_scans": [int(stack.n_scans)]},
         geometry=gpd.GeoSeries([footprint_polygon(valid, transform, 2 * pixel)], crs=crs),
         crs=crs)
     layers = {"anomalies": anomalies_layer, "suspects": suspects, "candidates": candidates,
@@ -190,7 +192,7 @@ def write_anomaly_products(products: Path, ctx, survey, anomalies, records: list
         labels_txt.append(rec["anomaly_id"].rsplit("-", 1)[-1] if is_mine else "")
         cols.append("#e31a1c" if is_mine else
                     "#969696" if rec["class_cue"] == "clutter" else "#ff7f00")
-    overview = mosaic_panel_png([stack[day, 0], stack[night, 0]],
+    overview = mosaic_panel_png([stack.scan(day)[0], stack.scan(night)[0]],
                                 [times_s[day], times_s[night]], transform, outline_xy,
                                 labels_txt, cols, epsg)
     curves = {}
@@ -222,7 +224,7 @@ def write_anomaly_products(products: Path, ctx, survey, anomalies, records: list
     if anomalies.day is not None and weak_day(anomalies.day):
         warnings.append(f"low thermal contrast: {weak_day_text(anomalies.day)}; {day_fact}")
     facts = [
-        ("frames", str(len(survey.frames))), ("scans", str(stack.shape[0])),
+        ("frames", str(len(survey.frames))), ("scans", str(stack.n_scans)),
         ("positions per scan", str(len(survey.positions))),
         ("bands", ", ".join(b.name for b in survey.bands)),
         ("mosaic pixel size", f"{pixel:.3f} m"),

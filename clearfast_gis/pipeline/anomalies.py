@@ -10,7 +10,7 @@ import numpy as np
 from clearfast_gis.detection.likelihood import screen_and_rank
 from clearfast_gis.detection.markers import markers_in_mosaics, split_markers
 from clearfast_gis.detection.voting import detect_on_mosaics
-from clearfast_gis.export.cog import read_mosaic_stack
+from clearfast_gis.export.cog import mosaic_stack
 from clearfast_gis.export.manifest import read_products_manifest
 from clearfast_gis.export.products import write_anomaly_products
 from clearfast_gis.export.records import AnomalySet, suspect_records
@@ -51,8 +51,8 @@ def detect(c: RunContext) -> Detection:
     o = c.options
     times = np.array([scan_records[s]["time_s"] for s in scans])
     lon = float(read.ctx.survey.manifest["site"]["longitude_deg"])
-    stack, first = read_mosaic_stack(c.products, scans)
-    labels, feats = detect_on_mosaics(stack, times, first.transform, read.grid.pixel_size, lon,
+    stack = mosaic_stack(c.products, scans)
+    labels, feats = detect_on_mosaics(stack, times, stack.transform, read.grid.pixel_size, lon,
                                       o.d1_m, o.d2_m, o.epsilon, o.level, o.gamma,
                                       o.max_anomalies, level_fraction=o.level_fraction,
                                       gamma_fraction=o.gamma_fraction, progress=c.progress,
@@ -60,13 +60,13 @@ def detect(c: RunContext) -> Detection:
     ids, xy = list(read.marker_ids), read.marker_xy
     feats, _ = split_markers(feats, ids, xy)
     matches = markers_in_mosaics(stack, read.grid, ids, xy)
-    return Detection(None, labels, feats, matches, stack, times, first.transform, digest)
+    return Detection(None, labels, feats, matches, stack, times, stack.transform, digest)
 
 
 def characterise_suspects(c: RunContext) -> Characterisation:
     """The ``characterisation`` stage: the site's soil, then depth and diffusivity of every
     suspect with the thermal model."""
-    from clearfast_gis.detection.clutter import background_clutter_k
+    from clearfast_gis.detection.clutter import background_levels
     from clearfast_gis.thermal import forcing_from_weather
 
     det = c[stages.DETECTION]
@@ -78,13 +78,12 @@ def characterise_suspects(c: RunContext) -> Characterisation:
         return Characterisation()
     ctx, logs = c[stages.READ].ctx, c[stages.READ].report.logs
     forcing = forcing_from_weather(ctx.weather)
-    outside = det.labels == 0
-    background = np.array([np.nanmedian(img[outside]) for img in det.stack[:, 0]])
+    background, clutter_k = background_levels(det.stack, det.labels,
+                                              c[stages.READ].grid.pixel_size)
     soil, alpha, sigma = site_soil(logs.soil, forcing, det.times_s, background)
     inversions = characterise(det.features, det.times_s, forcing, soil, progress=c.progress)
     site = ctx.survey.manifest["site"]
-    noise = contrast_noise_k(inversions, ctx.survey, background_clutter_k(
-        det.stack[:, 0], det.labels, c[stages.READ].grid.pixel_size))
+    noise = contrast_noise_k(inversions, ctx.survey, clutter_k)
     o = c.options
     day = day_contrast(forcing, soil, det.times_s, noise, float(site["latitude_deg"]),
                        float(site["longitude_deg"]),
@@ -113,7 +112,8 @@ def write_products(c: RunContext) -> dict:
                               len(det.times_s))
     timings = {k: v["wall_s"] for k, v in c.meter.stages.items()}
     manifest = write_anomaly_products(c.products, read.ctx, survey, anomalies, records,
-                                      det.stack, det.times_s, det.transform, read.epsg,
+                                      det.stack, c[stages.FOOTPRINT].valid, det.times_s,
+                                      det.transform, read.epsg,
                                       c[stages.MOSAICS].scan_records, read.report, c.options,
                                       fixq, timings)
     c.stage_state(stages.PRODUCTS).finish("", {"n": len(records), "mosaics": det.mosaics_digest},

@@ -181,8 +181,9 @@ class Detection:
     labels : int32 (H, W)
     features : list of AnomalyFeatures
     markers : list of MarkerMatch
-    stack : float32 (N, B, H, W)
-        Degrees C.
+    stack : ScanStack
+        The mosaics detected on, degrees C, read scan by scan from their COGs
+        (:class:`clearfast_gis.export.cog.CogStack`).
     times_s : float (N,)
         Scan times, UTC epoch seconds.
     transform : affine.Affine
@@ -194,7 +195,7 @@ class Detection:
     labels: np.ndarray | None = None
     features: list = field(default_factory=list)
     markers: list = field(default_factory=list)
-    stack: np.ndarray | None = None
+    stack: object = None
     times_s: np.ndarray | None = None
     transform: object = None
     mosaics_digest: str = ""

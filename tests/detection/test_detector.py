@@ -84,6 +84,21 @@ def test_result_shapes_and_nodata(diurnal):
     assert result.scan_hot.shape == (N, H, W)
     assert not result.mask[:3, :10].any()
     assert result.level == N / 2
+    assert result.covered.dtype == np.int32
+    np.testing.assert_array_equal(result.covered, np.isfinite(stack).sum(axis=0))
+
+
+def test_scan_support_reads_the_packed_maps(diurnal):
+    """The per-scan support of a set of pixels, read from the packed L_i, is the OR of the
+    unpacked maps over those pixels (columns on and off byte boundaries)."""
+    _, _, result, _ = diurnal
+    rows, cols = np.nonzero(result.labels == 1)
+    assert rows.size and result.scan_hot.any()
+    for r, c in ((rows, cols), (rows[:1], cols[:1]), (np.array([5, 9]), np.array([7, 8]))):
+        hot, cold = result.support(r, c)
+        np.testing.assert_array_equal(hot, result.scan_hot[:, r, c].any(axis=1))
+        np.testing.assert_array_equal(cold, result.scan_cold[:, r, c].any(axis=1))
+    assert result.support(rows, cols)[0].sum() >= 2
 
 
 def test_multiband_stack_runs(diurnal):
@@ -252,3 +267,13 @@ def test_weak_mine_among_strong_objects_needs_the_noise_cut():
     # the strong objects stay found, and texture does not gather the votes of a mine
     assert capped.labels[50, 50] > 0 and capped.labels[150, 190] > 0
     assert capped.n_anomalies <= 6
+
+
+def test_no_blob_no_features_and_no_pass_over_the_scans():
+    class Unread:
+        n_scans, n_bands, shape = 3, 1, (8, 9)
+
+        def scan(self, i):
+            raise AssertionError("no scan should be read without a blob")
+
+    assert blob_features(np.zeros((8, 9), dtype=np.int32), Unread()) == []

@@ -11,7 +11,7 @@ from hypothesis import strategies as st
 
 from clearfast_gis.errors import InvalidInput
 from clearfast_gis.export import band_description, mosaic_name, read_mosaic, write_cog
-from clearfast_gis.export.cog import default_overview_factors, read_mosaic_stack
+from clearfast_gis.export.cog import default_overview_factors, mosaic_stack
 from clearfast_gis.export.layout import mosaic_rel
 from clearfast_gis.timeutil import parse_utc
 
@@ -27,7 +27,7 @@ def bands():
 
 
 def test_mosaic_stack_of_a_products_folder(tmp_path):
-    """The scans' mosaics, in the order asked, as one float32 (N, B, H, W) array."""
+    """The scans' mosaics, in the order asked, read scan by scan as float32 (B, H, W)."""
     rng = np.random.default_rng(3)
     scans = [5, 2, 9]
     bands = {s: rng.normal(15.0 + s, 1.0, size=(2, 40, 60)).astype(np.float32) for s in scans}
@@ -36,11 +36,13 @@ def test_mosaic_stack_of_a_products_folder(tmp_path):
         write_cog(tmp_path / mosaic_rel(s), bands[s], TRANSFORM, 32636, ["a", "b"],
                   {"CLEARFAST_SCAN": s})
     assert mosaic_rel(2) == f"mosaics/{mosaic_name(2)}" == "mosaics/scan_002.tif"
-    stack, first = read_mosaic_stack(tmp_path, scans)
-    assert stack.dtype == np.float32 and stack.shape == (3, 2, 40, 60)
+    stack = mosaic_stack(tmp_path, scans)
+    assert (stack.n_scans, stack.n_bands, stack.shape) == (3, 2, (40, 60))
+    assert stack.transform == TRANSFORM
     for k, s in enumerate(scans):
-        np.testing.assert_array_equal(stack[k], bands[s])
-    assert first.tags["CLEARFAST_SCAN"] == "5" and first.transform == TRANSFORM
+        got = stack.scan(k)
+        assert got.dtype == np.float32
+        np.testing.assert_array_equal(got, bands[s])
 
 def test_round_trip_values_crs_tags(tmp_path, bands):
     path = tmp_path / "mosaics" / mosaic_name(7)
