@@ -9,8 +9,8 @@ into the estimates. Two kinds of chain terms are added in quadrature:
 value per scan) of the contrast curve moves the estimates by ``(J^T J)^-1 J^T delta_c``, with
 ``J`` the fit's own Jacobian at the estimate (:attr:`Inversion.jacobian`): the same error
 costs a weak (deep) object's estimate much more than a strong one's, and how much depends on
-when the survey's scans sample the day. Two such errors, each measured as 1 sigma on simulated
-surveys:
+when the survey's scans sample the day. Three such errors, each measured as 1 sigma on
+simulated surveys (``benchmarks/contrast_gain.py``):
 
 ================================  ==============  =========================================
 term                              1 sigma         how it was measured
