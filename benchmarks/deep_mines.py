@@ -20,7 +20,7 @@ import argparse
 import geopandas as gpd
 import numpy as np
 from contrast_gain import cell_centres, disc_contrast
-from depth_bias import load_stack
+from depth_bias import load_stack, survey_inputs
 from shapely.geometry import Point
 
 from clearfast_gis.detection.clutter import THRESHOLD_SNR, image_clutter_k
@@ -30,9 +30,7 @@ from clearfast_gis.detection.morphology import (
 )
 from clearfast_gis.evaluation.truth import read_truth_objects
 from clearfast_gis.pipeline import ProcessOptions
-from clearfast_gis.pipeline.inputs import open_context
-from clearfast_gis.survey import read_soil_log
-from clearfast_gis.thermal import build_site_table, forcing_from_weather, invert_anomaly
+from clearfast_gis.thermal import build_site_table, invert_anomaly
 from clearfast_gis.thermal.error_budget import with_chain_errors
 from clearfast_gis.thermal.sitesoil import CHAIN_TABLE_CENTRE, site_soil
 
@@ -43,16 +41,11 @@ def main() -> None:
     ap.add_argument("products")
     ap.add_argument("--min-depth", type=float, default=0.04, help="m")
     args = ap.parse_args()
-    ctx, _, _ = open_context(args.survey)
-    sv, fr = ctx.survey, ctx.survey.frames
-    scans = list(sv.scans)
-    times = np.array([fr.time_s[fr.scan == s].mean() for s in scans])
-    forcing = forcing_from_weather(ctx.weather)
+    scans, times, forcing, log = survey_inputs(args.survey)
     mosaic, mt = load_stack(args.products, scans, False)
     truth, tt = load_stack(args.survey, scans, True)
     xy_m, xy_t = cell_centres(mt, mosaic.shape[1:]), cell_centres(tt, truth.shape[1:])
-    soil, _, _ = site_soil(read_soil_log(sv.path("soil"), sv.label("soil")), forcing, times,
-                           np.array([np.nanmedian(im) for im in mosaic]))
+    soil, _, _ = site_soil(log, forcing, times, np.array([np.nanmedian(im) for im in mosaic]))
     d1_px = ProcessOptions().d1_m / mt.a
     hats, clutter = [], []
     for im in mosaic.astype(np.float32):
