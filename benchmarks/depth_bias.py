@@ -53,18 +53,23 @@ def load_stack(folder, scans, truth: bool) -> tuple[np.ndarray, object]:
     return (st - ZERO_CELSIUS_K if np.nanmedian(st) > 200 else st), transform
 
 
+def survey_inputs(survey) -> tuple[list[int], np.ndarray, object, object]:
+    """A survey's scans, their mean frame times (UTC epoch s), its forcing and soil log."""
+    ctx, _, _ = open_context(survey)
+    sv, fr = ctx.survey, ctx.survey.frames
+    scans = list(sv.scans)
+    times = np.array([fr.time_s[fr.scan == s].mean() for s in scans])
+    return (scans, times, forcing_from_weather(ctx.weather),
+            read_soil_log(sv.path("soil"), sv.label("soil")))
+
+
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("survey")
     ap.add_argument("products")
     ap.add_argument("--quick", action="store_true", help="the chain's soil and height only")
     args = ap.parse_args()
-    ctx, _, _ = open_context(args.survey)
-    sv, fr = ctx.survey, ctx.survey.frames
-    scans = list(sv.scans)
-    times = np.array([fr.time_s[fr.scan == s].mean() for s in scans])
-    forcing = forcing_from_weather(ctx.weather)
-    log = read_soil_log(sv.path("soil"), sv.label("soil"))
+    scans, times, forcing, log = survey_inputs(args.survey)
     mines = [m for m in read_truth_objects(args.survey)
              if m["kind"] in ("ap_mine", "at_mine") and m["depth_m"] <= 0.085]
     rows = []

@@ -9,7 +9,7 @@ residuals, floored at the noise variance when the noise is known).
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 from numpy.typing import ArrayLike
@@ -74,6 +74,10 @@ class Inversion:
         Correlation of the depth and log10 alpha estimates.
     model_contrast_k : ndarray, shape (S,)
         Best-fit contrast at the scan times, K.
+    jacobian : ndarray, shape (S, 2), optional
+        Derivatives of the modelled contrast at the scan times with respect to the depth
+        (K/m) and log10 alpha (K) at the estimate: how the fit maps an error of the curve to
+        the estimates (:mod:`clearfast_gis.thermal.error_budget`). None when not known.
     """
 
     depth_m: float
@@ -87,6 +91,7 @@ class Inversion:
     peak_contrast_k: float
     correlation: float
     model_contrast_k: np.ndarray
+    jacobian: np.ndarray | None = field(default=None, compare=False)
 
 
 def _local_minima(cost: np.ndarray, n: int) -> list[tuple[int, int]]:
@@ -221,4 +226,5 @@ def invert_anomaly(
         alpha_sigma_m2s=float(alpha * np.log(10.0) * sig[1]),
         log10_alpha_sigma=float(sig[1]), status=status, residual_rms_k=rms, noise_k=noise,
         peak_contrast_k=peak, correlation=corr, model_contrast_k=model,
+        jacobian=np.asarray(jm, dtype=float),
     )
