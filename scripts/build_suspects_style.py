@@ -99,7 +99,7 @@ VIRTUAL_FIELDS = (
 PRECISION = {
     "x": 2, "y": 2, "lat": 7, "lon": 7, "area_m2": 3, "diameter_m": 2, "circularity": 2,
     "depth_m": 3, "depth_sigma_m": 3, "confidence": 2, "cue_confidence": 2, "p_mine": 2,
-    "contrast_day_k": 2, "contrast_night_k": 2,
+    "contrast_day_k": 2, "contrast_night_k": 2, "mine_curve_r": 2,
 }
 """Decimals shown for stored numbers (their unit is in the alias)."""
 
@@ -115,7 +115,9 @@ ALIASES = {
     "p_mine": "Mine likelihood (0-1)", "priority": "Priority (1 = first)",
     "set_aside_reason": "Set aside because",
     "n_scans": "Scans seen", "contrast_day_k": "Day contrast (K)",
-    "contrast_night_k": "Night contrast (K)", "fix_quality": "GNSS fix quality",
+    "contrast_night_k": "Night contrast (K)",
+    "mine_curve_r": "Match with a mine's diurnal curve (-1 to 1)",
+    "fix_quality": "GNSS fix quality",
     "figure": "Contrast curve", "contrast_series": "Contrast series (JSON)",
 }
 
@@ -124,7 +126,8 @@ FORM = (
         ("Identification", ("short_id", "anomaly_id", "priority", "class_cue", "likelihood",
                             "cue_confidence_pct", "status", "polarity", "set_aside_reason")),
         ("Burial depth and soil", ("depth", "diffusivity")),
-        ("Thermal contrast", ("contrast_day_k", "contrast_night_k", "n_scans")),
+        ("Thermal contrast", ("contrast_day_k", "contrast_night_k", "mine_curve_r",
+                              "n_scans")),
         ("Shape", ("diameter_m", "area_m2", "circularity")),
     )),
     ("Contrast curve", (("Contrast curve", ("figure",)),)),

@@ -6,7 +6,12 @@ Rules (documented in docs/detection.md):
    'mixed' over several supporting scans (inconsistent thermal behaviour); a characterised
    diffusivity like stone or metal (``clearfast_gis.thermal.cue.material_cue`` says stone or metal).
    An anomaly cool around midday is clutter too (stones and low-emissivity metal are cool by
-   day; an explosive-filled object, a worse conductor than the soil, is warm by day).
+   day; an explosive-filled object, a worse conductor than the soil, is warm by day), and so
+   is one whose contrast curve runs against the modelled mine's (``mine_curve_r`` below
+   ``CLUTTER_CURVE_R``, :mod:`clearfast_gis.detection.curve`): a stone on a soil that
+   stores heat is warm at every scan through its emissivity, but least warm at midday.
+   A curve correlated less than ``MINE_CURVE_R`` (0.5) with the modelled mine's is not cued
+   as a mine (``unknown``).
    Anomalies scoring below ``MIN_MINE_SCORE`` (2) are ``unknown``: too weak to cue.
 2. otherwise, by the equivalent diameter: at_mine for 0.25-0.45 m (e.g. M6A2, 33.7 cm), ap_mine
    for 0.06-0.16 m (e.g. M2A4, 10.4 cm); unknown outside both ranges or without a metric size.
@@ -26,8 +31,8 @@ from collections.abc import Mapping
 
 from clearfast_gis.detection.features import AnomalyFeatures
 
-__all__ = ["AT_DIAMETER_M", "AP_DIAMETER_M", "CLASSES", "MIN_MINE_SCORE", "classify",
-           "diffusivity_cue"]
+__all__ = ["AT_DIAMETER_M", "AP_DIAMETER_M", "CLASSES", "CLUTTER_CURVE_R", "MIN_MINE_SCORE",
+           "MINE_CURVE_R", "classify", "diffusivity_cue"]
 
 CLASSES = ("at_mine", "ap_mine", "clutter", "unknown")
 AT_DIAMETER_M = (0.25, 0.45)
@@ -91,9 +96,19 @@ def _material(alpha: float, inversion) -> str:
 MIN_MINE_SCORE = 2.0
 """Below this detection score an anomaly is too weak to be cued as a mine (``unknown``)."""
 
+CLUTTER_CURVE_R = 0.0
+"""A contrast curve correlated below this with every modelled mine curve of the day
+(:func:`clearfast_gis.detection.curve.mine_curve_match`) runs against a mine's: clutter."""
+
+MINE_CURVE_R = 0.5
+"""A mine cue needs at least this correlation: the mines at 0-5 cm of the demo's clear, clay
+and tropical surveys of seeds 10-11 gave 0.92-1.00, stones -0.77 to -0.50 (docs/detection.md);
+below it the curve says nothing of a mine (``unknown``)."""
+
 
 def classify(features: AnomalyFeatures, inversion=None, contrast_day_k: float | None = None,
-             min_score: float = MIN_MINE_SCORE) -> tuple[str, float]:
+             min_score: float = MIN_MINE_SCORE, mine_curve_r: float | None = None
+             ) -> tuple[str, float]:
     """Class cue and confidence of one anomaly.
 
     Parameters
@@ -110,6 +125,11 @@ def classify(features: AnomalyFeatures, inversion=None, contrast_day_k: float | 
         (a stone, or metal and other low-emissivity debris) is clutter.
     min_score : float
         Anomalies scoring lower are ``unknown`` (too weak to cue as a mine).
+    mine_curve_r : float, optional
+        Correlation of the anomaly's contrast curve with the day's modelled mine curves
+        (-1 to 1, :func:`clearfast_gis.detection.curve.mine_curve_match`); below
+        :data:`CLUTTER_CURVE_R` the anomaly is clutter, below :data:`MINE_CURVE_R` it is
+        not cued as a mine.
 
     Returns
     -------
@@ -135,9 +155,14 @@ def classify(features: AnomalyFeatures, inversion=None, contrast_day_k: float | 
 
     cool_by_day = contrast_day_k is not None and math.isfinite(contrast_day_k) \
         and contrast_day_k < 0.0
-    if (irregular or inconsistent or hard or cool_by_day) and features.score >= min_score:
+    against = mine_curve_r is not None and math.isfinite(mine_curve_r) \
+        and mine_curve_r < CLUTTER_CURVE_R
+    if (irregular or inconsistent or hard or cool_by_day or against) \
+            and features.score >= min_score:
         return "clutter", round(1.0 - product, 4)
-    if features.score < min_score or irregular or inconsistent or hard:
+    unlike = mine_curve_r is not None and math.isfinite(mine_curve_r) \
+        and mine_curve_r < MINE_CURVE_R
+    if features.score < min_score or irregular or inconsistent or hard or unlike:
         return "unknown", round(product, 4)
     d = features.diameter_m
     if math.isfinite(d) and AT_DIAMETER_M[0] <= d <= AT_DIAMETER_M[1]:

@@ -130,13 +130,17 @@ def _circularity(region) -> tuple[float, float, float]:
 
 
 def _ring_pixels(labels: np.ndarray, valid: np.ndarray, row: float, col: float,
-                 r_in: float, r_out: float) -> tuple[np.ndarray, np.ndarray]:
+                 r_in: float, r_out: float, only: int | None = None
+                 ) -> tuple[np.ndarray, np.ndarray]:
+    """Ring pixels outside every blob, or outside blob ``only`` alone when given."""
     h, w = labels.shape
     r0, r1 = max(0, int(np.floor(row - r_out))), min(h, int(np.ceil(row + r_out)) + 1)
     c0, c1 = max(0, int(np.floor(col - r_out))), min(w, int(np.ceil(col + r_out)) + 1)
     rr, cc = np.mgrid[r0:r1, c0:c1]
     d2 = (rr - row) ** 2 + (cc - col) ** 2
-    sel = (d2 >= r_in**2) & (d2 <= r_out**2) & (labels[r0:r1, c0:c1] == 0) & valid[r0:r1, c0:c1]
+    box = labels[r0:r1, c0:c1]
+    free = box == 0 if only is None else box != only
+    sel = (d2 >= r_in**2) & (d2 <= r_out**2) & free & valid[r0:r1, c0:c1]
     return rr[sel], cc[sel]
 
 
@@ -325,6 +329,9 @@ def blob_features(
         r_in = max(ring_radii[0] * r_eq, r_eq + 1.0)
         r_out = max(ring_radii[1] * r_eq, r_in + 2.0)
         rr, cc = _ring_pixels(labels, valid, row, col, r_in, r_out)
+        if rr.size < 2:  # inside another blob (a compact object split from a warm patch):
+            # the patch around it is its background
+            rr, cc = _ring_pixels(labels, valid, row, col, r_in, r_out, only=int(region.label))
         window = footprint_window(region.bbox, int(np.ceil(r_eq)), labels.shape)
         blobs.append(_Blob(
             region, region.coords[:, 0], region.coords[:, 1], row, col, r_eq, rr, cc, window,

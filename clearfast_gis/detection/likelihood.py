@@ -12,11 +12,15 @@ size_misfit   ``min_k |ln(diameter_m / D_k)|`` over the survey's mine types ``D_
 circularity   0-1 (docs/detection.md)
 diurnal       1 for ``warm_day_cool_night`` (an explosive's signature), else 0
 cool_by_day   1 when the daytime contrast is negative (stones, metal), else 0
-alpha_misfit  characterised diffusivity only: ``min(z^2, 9)`` with
-              ``z = (log10 alpha - log10 ALPHA_EXPLOSIVE) / sqrt(s^2 + 0.15^2)``, s the
-              estimate's log10 sigma; 0 when not characterised
 characterised 1 when the inversion's status is ``ok``, else 0
+curve_match   ``mine_curve_r``: correlation of the contrast curve with the day's modelled
+              mine curve (:mod:`clearfast_gis.detection.curve`), -1 to 1; 0 when unknown
 ============  ==========================================================================
+
+The object's diffusivity is not a feature (it was, as ``alpha_misfit``, in ``logistic-2``):
+on dry soils the inversion puts TNT-filled mines at 2.8-4.4e-7 m2/s instead of 1e-7 (demo
+tropics and southern winter, seeds 10-11), and the fit over those days gave the misfit a
+weight of the wrong sign. Diffusivity stays a clutter cue of the class cue (stone, metal).
 
 The share of scans that support a detection is not a feature: on the 6-scan demo surveys the
 model was first fitted on, nearly every detection is seen in 5 or 6 scans and the fit gave it
@@ -41,17 +45,11 @@ from importlib import resources
 import numpy as np
 
 FEATURES = ("strength", "size_misfit", "circularity", "diurnal", "cool_by_day",
-            "alpha_misfit", "characterised")
+            "characterised", "curve_match")
 """Model features, in the order of the coefficients."""
 
 MINE_TYPE_DIAMETERS_M = {"AP M2A4": 0.104, "AT M6A2": 0.337}
 """Diameters of the mine types expected on the surveys, m."""
-
-LOG10_ALPHA_EXPLOSIVE = math.log10(1.0e-7)
-"""log10 diffusivity of an explosive fill (TNT 1.0e-7 m2/s)."""
-
-ALPHA_CLASS_SPREAD = 0.15
-"""Spread of explosive and casing diffusivities, log10 units (as the material cue's)."""
 
 PARAMETERS = "likelihood.json"
 """The fitted model's file in ``clearfast_gis/data``."""
@@ -69,16 +67,10 @@ def features(record: Mapping) -> np.ndarray:
     day = record.get("contrast_day_k")
     cool = 1.0 if day is not None and math.isfinite(float(day)) and float(day) < 0 else 0.0
     ok = record.get("status") == "ok"
-    alpha = record.get("diffusivity_m2s")
-    alpha_misfit = 0.0
-    if ok and alpha is not None and math.isfinite(float(alpha)) and float(alpha) > 0:
-        sa = record.get("diffusivity_sigma_m2s")
-        s = (float(sa) / (float(alpha) * math.log(10.0))
-             if sa is not None and math.isfinite(float(sa)) else 0.0)
-        z = (math.log10(float(alpha)) - LOG10_ALPHA_EXPLOSIVE) / math.hypot(s, ALPHA_CLASS_SPREAD)
-        alpha_misfit = min(z * z, 9.0)
+    match = record.get("mine_curve_r")
+    match = float(match) if match is not None and math.isfinite(float(match)) else 0.0
     return np.array([math.log10(max(score, 0.1)), min(size, 3.0), circ, diurnal, cool,
-                     alpha_misfit, 1.0 if ok else 0.0])
+                     1.0 if ok else 0.0, match])
 
 
 @lru_cache(maxsize=1)

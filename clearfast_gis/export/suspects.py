@@ -35,6 +35,7 @@ SUSPECT_COLUMNS: dict[str, str] = {
     "n_scans": "int",
     "contrast_day_k": "float",
     "contrast_night_k": "float",
+    "mine_curve_r": "float",
     "fix_quality": "Int64",
     "figure": "str",
     "contrast_series": "str",

@@ -1,12 +1,12 @@
 <!DOCTYPE qgis PUBLIC 'http://mrcc.com/qgis.dtd' 'SYSTEM'>
-<qgis hasScaleBasedVisibilityFlag="0" simplifyDrawingHints="1" symbologyReferenceScale="-1" styleCategories="Symbology|Labeling|Fields|Forms|MapTips|AttributeTable|Rendering" labelsEnabled="0" simplifyAlgorithm="0" simplifyLocal="1" maxScale="0" simplifyDrawingTol="1" minScale="100000000" simplifyMaxScale="1" version="3.22.16-Białowieża">
-  <renderer-v2 forceraster="0" attr="polarity" referencescale="-1" enableorderby="0" type="categorizedSymbol" symbollevels="0">
+<qgis minScale="100000000" simplifyDrawingTol="1" simplifyDrawingHints="1" simplifyLocal="1" hasScaleBasedVisibilityFlag="0" simplifyAlgorithm="0" simplifyMaxScale="1" symbologyReferenceScale="-1" styleCategories="Symbology|Labeling|Fields|Forms|MapTips|AttributeTable|Rendering" version="3.22.16-Białowieża" labelsEnabled="0" maxScale="0">
+  <renderer-v2 enableorderby="0" attr="polarity" forceraster="0" symbollevels="0" type="categorizedSymbol" referencescale="-1">
     <categories>
-      <category value="hot" symbol="0" label="Warm by day" render="true"/>
-      <category value="cold" symbol="1" label="Cool by day" render="true"/>
+      <category symbol="0" label="Warm by day" value="hot" render="true"/>
+      <category symbol="1" label="Cool by day" value="cold" render="true"/>
     </categories>
     <symbols>
-      <symbol name="0" clip_to_extent="1" force_rhr="0" type="fill" alpha="1">
+      <symbol force_rhr="0" alpha="1" clip_to_extent="1" name="0" type="fill">
         <data_defined_properties>
           <Option type="Map">
             <Option value="" name="name" type="QString"/>
@@ -14,7 +14,7 @@
             <Option value="collection" name="type" type="QString"/>
           </Option>
         </data_defined_properties>
-        <layer enabled="1" class="SimpleFill" pass="0" locked="0">
+        <layer pass="0" locked="0" class="SimpleFill" enabled="1">
           <Option type="Map">
             <Option value="3x:0,0,0,0,0,0" name="border_width_map_unit_scale" type="QString"/>
             <Option value="0,0,0,0" name="color" type="QString"/>
@@ -48,7 +48,7 @@
           </data_defined_properties>
         </layer>
       </symbol>
-      <symbol name="1" clip_to_extent="1" force_rhr="0" type="fill" alpha="1">
+      <symbol force_rhr="0" alpha="1" clip_to_extent="1" name="1" type="fill">
         <data_defined_properties>
           <Option type="Map">
             <Option value="" name="name" type="QString"/>
@@ -56,7 +56,7 @@
             <Option value="collection" name="type" type="QString"/>
           </Option>
         </data_defined_properties>
-        <layer enabled="1" class="SimpleFill" pass="0" locked="0">
+        <layer pass="0" locked="0" class="SimpleFill" enabled="1">
           <Option type="Map">
             <Option value="3x:0,0,0,0,0,0" name="border_width_map_unit_scale" type="QString"/>
             <Option value="0,0,0,0" name="color" type="QString"/>
@@ -284,7 +284,7 @@
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="confidence">
+    <field configurationFlags="None" name="cue_confidence">
       <editWidget type="Range">
         <config>
           <Option type="Map">
@@ -294,6 +294,40 @@
             <Option value="2" name="Precision" type="int"/>
             <Option value="1" name="Step" type="int"/>
             <Option value="SpinBox" name="Style" type="QString"/>
+          </Option>
+        </config>
+      </editWidget>
+    </field>
+    <field configurationFlags="None" name="p_mine">
+      <editWidget type="Range">
+        <config>
+          <Option type="Map">
+            <Option value="true" name="AllowNull" type="bool"/>
+            <Option value="1e+09" name="Max" type="double"/>
+            <Option value="-1e+09" name="Min" type="double"/>
+            <Option value="2" name="Precision" type="int"/>
+            <Option value="1" name="Step" type="int"/>
+            <Option value="SpinBox" name="Style" type="QString"/>
+          </Option>
+        </config>
+      </editWidget>
+    </field>
+    <field configurationFlags="None" name="priority">
+      <editWidget type="TextEdit">
+        <config>
+          <Option type="Map">
+            <Option value="false" name="IsMultiline" type="bool"/>
+            <Option value="false" name="UseHtml" type="bool"/>
+          </Option>
+        </config>
+      </editWidget>
+    </field>
+    <field configurationFlags="None" name="set_aside_reason">
+      <editWidget type="TextEdit">
+        <config>
+          <Option type="Map">
+            <Option value="false" name="IsMultiline" type="bool"/>
+            <Option value="false" name="UseHtml" type="bool"/>
           </Option>
         </config>
       </editWidget>
@@ -336,6 +370,20 @@
         </config>
       </editWidget>
     </field>
+    <field configurationFlags="None" name="mine_curve_r">
+      <editWidget type="Range">
+        <config>
+          <Option type="Map">
+            <Option value="true" name="AllowNull" type="bool"/>
+            <Option value="1e+09" name="Max" type="double"/>
+            <Option value="-1e+09" name="Min" type="double"/>
+            <Option value="2" name="Precision" type="int"/>
+            <Option value="1" name="Step" type="int"/>
+            <Option value="SpinBox" name="Style" type="QString"/>
+          </Option>
+        </config>
+      </editWidget>
+    </field>
     <field configurationFlags="None" name="fix_quality">
       <editWidget type="TextEdit">
         <config>
@@ -354,54 +402,6 @@
       </editWidget>
     </field>
     <field configurationFlags="None" name="contrast_series">
-      <editWidget type="TextEdit">
-        <config>
-          <Option type="Map">
-            <Option value="false" name="IsMultiline" type="bool"/>
-            <Option value="false" name="UseHtml" type="bool"/>
-          </Option>
-        </config>
-      </editWidget>
-    </field>
-    <field configurationFlags="None" name="p_mine">
-      <editWidget type="Range">
-        <config>
-          <Option type="Map">
-            <Option value="true" name="AllowNull" type="bool"/>
-            <Option value="1e+09" name="Max" type="double"/>
-            <Option value="-1e+09" name="Min" type="double"/>
-            <Option value="2" name="Precision" type="int"/>
-            <Option value="1" name="Step" type="int"/>
-            <Option value="SpinBox" name="Style" type="QString"/>
-          </Option>
-        </config>
-      </editWidget>
-    </field>
-    <field configurationFlags="None" name="priority">
-      <editWidget type="TextEdit">
-        <config>
-          <Option type="Map">
-            <Option value="false" name="IsMultiline" type="bool"/>
-            <Option value="false" name="UseHtml" type="bool"/>
-          </Option>
-        </config>
-      </editWidget>
-    </field>
-    <field configurationFlags="None" name="cue_confidence">
-      <editWidget type="Range">
-        <config>
-          <Option type="Map">
-            <Option value="true" name="AllowNull" type="bool"/>
-            <Option value="1e+09" name="Max" type="double"/>
-            <Option value="-1e+09" name="Min" type="double"/>
-            <Option value="2" name="Precision" type="int"/>
-            <Option value="1" name="Step" type="int"/>
-            <Option value="SpinBox" name="Style" type="QString"/>
-          </Option>
-        </config>
-      </editWidget>
-    </field>
-    <field configurationFlags="None" name="set_aside_reason">
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
@@ -463,37 +463,37 @@
     </field>
   </fieldConfiguration>
   <aliases>
-    <alias field="anomaly_id" name="Suspect id" index="0"/>
-    <alias field="x" name="Easting (m, survey UTM)" index="1"/>
-    <alias field="y" name="Northing (m, survey UTM)" index="2"/>
-    <alias field="lat" name="Latitude (°, WGS84)" index="3"/>
-    <alias field="lon" name="Longitude (°, WGS84)" index="4"/>
-    <alias field="area_m2" name="Area (m²)" index="5"/>
-    <alias field="diameter_m" name="Diameter (m)" index="6"/>
-    <alias field="circularity" name="Circularity (0-1)" index="7"/>
-    <alias field="depth_m" name="Burial depth (m)" index="8"/>
-    <alias field="depth_sigma_m" name="Depth uncertainty, 1σ (m)" index="9"/>
-    <alias field="diffusivity_m2s" name="Thermal diffusivity (m²/s)" index="10"/>
-    <alias field="diffusivity_sigma_m2s" name="Diffusivity uncertainty, 1σ (m²/s)" index="11"/>
-    <alias field="status" name="Characterisation status" index="12"/>
-    <alias field="polarity" name="Polarity" index="13"/>
-    <alias field="class_cue" name="Class cue" index="14"/>
-    <alias field="confidence" name="Class cue confidence (0-1)" index="15"/>
-    <alias field="n_scans" name="Scans seen" index="16"/>
-    <alias field="contrast_day_k" name="Day contrast (K)" index="17"/>
-    <alias field="contrast_night_k" name="Night contrast (K)" index="18"/>
-    <alias field="fix_quality" name="GNSS fix quality" index="19"/>
-    <alias field="figure" name="Contrast curve" index="20"/>
-    <alias field="contrast_series" name="Contrast series (JSON)" index="21"/>
-    <alias field="p_mine" name="Mine likelihood (0-1)" index="22"/>
-    <alias field="priority" name="Priority (1 = first)" index="23"/>
-    <alias field="cue_confidence" name="Class cue confidence (0-1)" index="24"/>
-    <alias field="set_aside_reason" name="Set aside because" index="25"/>
-    <alias field="short_id" name="Short id" index="26"/>
-    <alias field="depth" name="Burial depth ± 1σ" index="27"/>
-    <alias field="diffusivity" name="Thermal diffusivity ± 1σ" index="28"/>
-    <alias field="likelihood" name="Mine likelihood" index="29"/>
-    <alias field="cue_confidence_pct" name="Class cue confidence" index="30"/>
+    <alias field="anomaly_id" index="0" name="Suspect id"/>
+    <alias field="x" index="1" name="Easting (m, survey UTM)"/>
+    <alias field="y" index="2" name="Northing (m, survey UTM)"/>
+    <alias field="lat" index="3" name="Latitude (°, WGS84)"/>
+    <alias field="lon" index="4" name="Longitude (°, WGS84)"/>
+    <alias field="area_m2" index="5" name="Area (m²)"/>
+    <alias field="diameter_m" index="6" name="Diameter (m)"/>
+    <alias field="circularity" index="7" name="Circularity (0-1)"/>
+    <alias field="depth_m" index="8" name="Burial depth (m)"/>
+    <alias field="depth_sigma_m" index="9" name="Depth uncertainty, 1σ (m)"/>
+    <alias field="diffusivity_m2s" index="10" name="Thermal diffusivity (m²/s)"/>
+    <alias field="diffusivity_sigma_m2s" index="11" name="Diffusivity uncertainty, 1σ (m²/s)"/>
+    <alias field="status" index="12" name="Characterisation status"/>
+    <alias field="polarity" index="13" name="Polarity"/>
+    <alias field="class_cue" index="14" name="Class cue"/>
+    <alias field="cue_confidence" index="15" name="Class cue confidence (0-1)"/>
+    <alias field="p_mine" index="16" name="Mine likelihood (0-1)"/>
+    <alias field="priority" index="17" name="Priority (1 = first)"/>
+    <alias field="set_aside_reason" index="18" name="Set aside because"/>
+    <alias field="n_scans" index="19" name="Scans seen"/>
+    <alias field="contrast_day_k" index="20" name="Day contrast (K)"/>
+    <alias field="contrast_night_k" index="21" name="Night contrast (K)"/>
+    <alias field="mine_curve_r" index="22" name="Match with a mine's diurnal curve (-1 to 1)"/>
+    <alias field="fix_quality" index="23" name="GNSS fix quality"/>
+    <alias field="figure" index="24" name="Contrast curve"/>
+    <alias field="contrast_series" index="25" name="Contrast series (JSON)"/>
+    <alias field="short_id" index="26" name="Short id"/>
+    <alias field="depth" index="27" name="Burial depth ± 1σ"/>
+    <alias field="diffusivity" index="28" name="Thermal diffusivity ± 1σ"/>
+    <alias field="likelihood" index="29" name="Mine likelihood"/>
+    <alias field="cue_confidence_pct" index="30" name="Class cue confidence"/>
   </aliases>
   <defaults>
     <default applyOnUpdate="0" field="anomaly_id" expression=""/>
@@ -511,17 +511,17 @@
     <default applyOnUpdate="0" field="status" expression=""/>
     <default applyOnUpdate="0" field="polarity" expression=""/>
     <default applyOnUpdate="0" field="class_cue" expression=""/>
-    <default applyOnUpdate="0" field="confidence" expression=""/>
+    <default applyOnUpdate="0" field="cue_confidence" expression=""/>
+    <default applyOnUpdate="0" field="p_mine" expression=""/>
+    <default applyOnUpdate="0" field="priority" expression=""/>
+    <default applyOnUpdate="0" field="set_aside_reason" expression=""/>
     <default applyOnUpdate="0" field="n_scans" expression=""/>
     <default applyOnUpdate="0" field="contrast_day_k" expression=""/>
     <default applyOnUpdate="0" field="contrast_night_k" expression=""/>
+    <default applyOnUpdate="0" field="mine_curve_r" expression=""/>
     <default applyOnUpdate="0" field="fix_quality" expression=""/>
     <default applyOnUpdate="0" field="figure" expression=""/>
     <default applyOnUpdate="0" field="contrast_series" expression=""/>
-    <default applyOnUpdate="0" field="p_mine" expression=""/>
-    <default applyOnUpdate="0" field="priority" expression=""/>
-    <default applyOnUpdate="0" field="cue_confidence" expression=""/>
-    <default applyOnUpdate="0" field="set_aside_reason" expression=""/>
     <default applyOnUpdate="0" field="short_id" expression=""/>
     <default applyOnUpdate="0" field="depth" expression=""/>
     <default applyOnUpdate="0" field="diffusivity" expression=""/>
@@ -529,103 +529,108 @@
     <default applyOnUpdate="0" field="cue_confidence_pct" expression=""/>
   </defaults>
   <constraints>
-    <constraint unique_strength="0" field="anomaly_id" constraints="0" notnull_strength="0" exp_strength="0"/>
-    <constraint unique_strength="0" field="x" constraints="0" notnull_strength="0" exp_strength="0"/>
-    <constraint unique_strength="0" field="y" constraints="0" notnull_strength="0" exp_strength="0"/>
-    <constraint unique_strength="0" field="lat" constraints="0" notnull_strength="0" exp_strength="0"/>
-    <constraint unique_strength="0" field="lon" constraints="0" notnull_strength="0" exp_strength="0"/>
-    <constraint unique_strength="0" field="area_m2" constraints="0" notnull_strength="0" exp_strength="0"/>
-    <constraint unique_strength="0" field="diameter_m" constraints="0" notnull_strength="0" exp_strength="0"/>
-    <constraint unique_strength="0" field="circularity" constraints="0" notnull_strength="0" exp_strength="0"/>
-    <constraint unique_strength="0" field="depth_m" constraints="0" notnull_strength="0" exp_strength="0"/>
-    <constraint unique_strength="0" field="depth_sigma_m" constraints="0" notnull_strength="0" exp_strength="0"/>
-    <constraint unique_strength="0" field="diffusivity_m2s" constraints="0" notnull_strength="0" exp_strength="0"/>
-    <constraint unique_strength="0" field="diffusivity_sigma_m2s" constraints="0" notnull_strength="0" exp_strength="0"/>
-    <constraint unique_strength="0" field="status" constraints="0" notnull_strength="0" exp_strength="0"/>
-    <constraint unique_strength="0" field="polarity" constraints="0" notnull_strength="0" exp_strength="0"/>
-    <constraint unique_strength="0" field="class_cue" constraints="0" notnull_strength="0" exp_strength="0"/>
-    <constraint unique_strength="0" field="confidence" constraints="0" notnull_strength="0" exp_strength="0"/>
-    <constraint unique_strength="0" field="n_scans" constraints="0" notnull_strength="0" exp_strength="0"/>
-    <constraint unique_strength="0" field="contrast_day_k" constraints="0" notnull_strength="0" exp_strength="0"/>
-    <constraint unique_strength="0" field="contrast_night_k" constraints="0" notnull_strength="0" exp_strength="0"/>
-    <constraint unique_strength="0" field="fix_quality" constraints="0" notnull_strength="0" exp_strength="0"/>
-    <constraint unique_strength="0" field="figure" constraints="0" notnull_strength="0" exp_strength="0"/>
-    <constraint unique_strength="0" field="contrast_series" constraints="0" notnull_strength="0" exp_strength="0"/>
-    <constraint unique_strength="0" field="p_mine" constraints="0" notnull_strength="0" exp_strength="0"/>
-    <constraint unique_strength="0" field="priority" constraints="0" notnull_strength="0" exp_strength="0"/>
-    <constraint unique_strength="0" field="cue_confidence" constraints="0" notnull_strength="0" exp_strength="0"/>
-    <constraint unique_strength="0" field="set_aside_reason" constraints="0" notnull_strength="0" exp_strength="0"/>
-    <constraint unique_strength="0" field="short_id" constraints="0" notnull_strength="0" exp_strength="0"/>
-    <constraint unique_strength="0" field="depth" constraints="0" notnull_strength="0" exp_strength="0"/>
-    <constraint unique_strength="0" field="diffusivity" constraints="0" notnull_strength="0" exp_strength="0"/>
-    <constraint unique_strength="0" field="likelihood" constraints="0" notnull_strength="0" exp_strength="0"/>
-    <constraint unique_strength="0" field="cue_confidence_pct" constraints="0" notnull_strength="0" exp_strength="0"/>
+    <constraint exp_strength="0" unique_strength="0" field="anomaly_id" constraints="0" notnull_strength="0"/>
+    <constraint exp_strength="0" unique_strength="0" field="x" constraints="0" notnull_strength="0"/>
+    <constraint exp_strength="0" unique_strength="0" field="y" constraints="0" notnull_strength="0"/>
+    <constraint exp_strength="0" unique_strength="0" field="lat" constraints="0" notnull_strength="0"/>
+    <constraint exp_strength="0" unique_strength="0" field="lon" constraints="0" notnull_strength="0"/>
+    <constraint exp_strength="0" unique_strength="0" field="area_m2" constraints="0" notnull_strength="0"/>
+    <constraint exp_strength="0" unique_strength="0" field="diameter_m" constraints="0" notnull_strength="0"/>
+    <constraint exp_strength="0" unique_strength="0" field="circularity" constraints="0" notnull_strength="0"/>
+    <constraint exp_strength="0" unique_strength="0" field="depth_m" constraints="0" notnull_strength="0"/>
+    <constraint exp_strength="0" unique_strength="0" field="depth_sigma_m" constraints="0" notnull_strength="0"/>
+    <constraint exp_strength="0" unique_strength="0" field="diffusivity_m2s" constraints="0" notnull_strength="0"/>
+    <constraint exp_strength="0" unique_strength="0" field="diffusivity_sigma_m2s" constraints="0" notnull_strength="0"/>
+    <constraint exp_strength="0" unique_strength="0" field="status" constraints="0" notnull_strength="0"/>
+    <constraint exp_strength="0" unique_strength="0" field="polarity" constraints="0" notnull_strength="0"/>
+    <constraint exp_strength="0" unique_strength="0" field="class_cue" constraints="0" notnull_strength="0"/>
+    <constraint exp_strength="0" unique_strength="0" field="cue_confidence" constraints="0" notnull_strength="0"/>
+    <constraint exp_strength="0" unique_strength="0" field="p_mine" constraints="0" notnull_strength="0"/>
+    <constraint exp_strength="0" unique_strength="0" field="priority" constraints="0" notnull_strength="0"/>
+    <constraint exp_strength="0" unique_strength="0" field="set_aside_reason" constraints="0" notnull_strength="0"/>
+    <constraint exp_strength="0" unique_strength="0" field="n_scans" constraints="0" notnull_strength="0"/>
+    <constraint exp_strength="0" unique_strength="0" field="contrast_day_k" constraints="0" notnull_strength="0"/>
+    <constraint exp_strength="0" unique_strength="0" field="contrast_night_k" constraints="0" notnull_strength="0"/>
+    <constraint exp_strength="0" unique_strength="0" field="mine_curve_r" constraints="0" notnull_strength="0"/>
+    <constraint exp_strength="0" unique_strength="0" field="fix_quality" constraints="0" notnull_strength="0"/>
+    <constraint exp_strength="0" unique_strength="0" field="figure" constraints="0" notnull_strength="0"/>
+    <constraint exp_strength="0" unique_strength="0" field="contrast_series" constraints="0" notnull_strength="0"/>
+    <constraint exp_strength="0" unique_strength="0" field="short_id" constraints="0" notnull_strength="0"/>
+    <constraint exp_strength="0" unique_strength="0" field="depth" constraints="0" notnull_strength="0"/>
+    <constraint exp_strength="0" unique_strength="0" field="diffusivity" constraints="0" notnull_strength="0"/>
+    <constraint exp_strength="0" unique_strength="0" field="likelihood" constraints="0" notnull_strength="0"/>
+    <constraint exp_strength="0" unique_strength="0" field="cue_confidence_pct" constraints="0" notnull_strength="0"/>
   </constraints>
   <constraintExpressions>
-    <constraint exp="" desc="" field="anomaly_id"/>
-    <constraint exp="" desc="" field="x"/>
-    <constraint exp="" desc="" field="y"/>
-    <constraint exp="" desc="" field="lat"/>
-    <constraint exp="" desc="" field="lon"/>
-    <constraint exp="" desc="" field="area_m2"/>
-    <constraint exp="" desc="" field="diameter_m"/>
-    <constraint exp="" desc="" field="circularity"/>
-    <constraint exp="" desc="" field="depth_m"/>
-    <constraint exp="" desc="" field="depth_sigma_m"/>
-    <constraint exp="" desc="" field="diffusivity_m2s"/>
-    <constraint exp="" desc="" field="diffusivity_sigma_m2s"/>
-    <constraint exp="" desc="" field="status"/>
-    <constraint exp="" desc="" field="polarity"/>
-    <constraint exp="" desc="" field="class_cue"/>
-    <constraint exp="" desc="" field="confidence"/>
-    <constraint exp="" desc="" field="n_scans"/>
-    <constraint exp="" desc="" field="contrast_day_k"/>
-    <constraint exp="" desc="" field="contrast_night_k"/>
-    <constraint exp="" desc="" field="fix_quality"/>
-    <constraint exp="" desc="" field="figure"/>
-    <constraint exp="" desc="" field="contrast_series"/>
-    <constraint exp="" desc="" field="p_mine"/>
-    <constraint exp="" desc="" field="priority"/>
-    <constraint exp="" desc="" field="cue_confidence"/>
-    <constraint exp="" desc="" field="set_aside_reason"/>
-    <constraint exp="" desc="" field="short_id"/>
-    <constraint exp="" desc="" field="depth"/>
-    <constraint exp="" desc="" field="diffusivity"/>
-    <constraint exp="" desc="" field="likelihood"/>
-    <constraint exp="" desc="" field="cue_confidence_pct"/>
+    <constraint desc="" field="anomaly_id" exp=""/>
+    <constraint desc="" field="x" exp=""/>
+    <constraint desc="" field="y" exp=""/>
+    <constraint desc="" field="lat" exp=""/>
+    <constraint desc="" field="lon" exp=""/>
+    <constraint desc="" field="area_m2" exp=""/>
+    <constraint desc="" field="diameter_m" exp=""/>
+    <constraint desc="" field="circularity" exp=""/>
+    <constraint desc="" field="depth_m" exp=""/>
+    <constraint desc="" field="depth_sigma_m" exp=""/>
+    <constraint desc="" field="diffusivity_m2s" exp=""/>
+    <constraint desc="" field="diffusivity_sigma_m2s" exp=""/>
+    <constraint desc="" field="status" exp=""/>
+    <constraint desc="" field="polarity" exp=""/>
+    <constraint desc="" field="class_cue" exp=""/>
+    <constraint desc="" field="cue_confidence" exp=""/>
+    <constraint desc="" field="p_mine" exp=""/>
+    <constraint desc="" field="priority" exp=""/>
+    <constraint desc="" field="set_aside_reason" exp=""/>
+    <constraint desc="" field="n_scans" exp=""/>
+    <constraint desc="" field="contrast_day_k" exp=""/>
+    <constraint desc="" field="contrast_night_k" exp=""/>
+    <constraint desc="" field="mine_curve_r" exp=""/>
+    <constraint desc="" field="fix_quality" exp=""/>
+    <constraint desc="" field="figure" exp=""/>
+    <constraint desc="" field="contrast_series" exp=""/>
+    <constraint desc="" field="short_id" exp=""/>
+    <constraint desc="" field="depth" exp=""/>
+    <constraint desc="" field="diffusivity" exp=""/>
+    <constraint desc="" field="likelihood" exp=""/>
+    <constraint desc="" field="cue_confidence_pct" exp=""/>
   </constraintExpressions>
   <expressionfields>
-    <field comment="" typeName="" name="short_id" precision="0" expression="'S-' || lpad(to_string(to_int(regexp_substr(&quot;anomaly_id&quot;, '(\\d+)$'))), 3, '0')" subType="0" type="10" length="0"/>
-    <field comment="" typeName="" name="depth" precision="0" expression="CASE WHEN &quot;depth_m&quot; * 100 IS NULL THEN 'not characterised' WHEN &quot;depth_sigma_m&quot; * 100 IS NULL THEN format_number(&quot;depth_m&quot; * 100, 1) || ' cm' ELSE format_number(&quot;depth_m&quot; * 100, 1) || ' ± ' || format_number(&quot;depth_sigma_m&quot; * 100, 1) || ' cm' END" subType="0" type="10" length="0"/>
-    <field comment="" typeName="" name="diffusivity" precision="0" expression="CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 IS NULL THEN 'not characterised' WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 IS NULL THEN CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' mm²/s' ELSE CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' ± ' || CASE WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_sigma_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6))))) END || ' mm²/s' END" subType="0" type="10" length="0"/>
-    <field comment="" typeName="" name="likelihood" precision="0" expression="CASE WHEN attribute('p_mine') IS NULL THEN 'not estimated' ELSE format_number(100 * attribute('p_mine'), 0) || ' %' END" subType="0" type="10" length="0"/>
-    <field comment="" typeName="" name="cue_confidence_pct" precision="0" expression="CASE WHEN coalesce(attribute('cue_confidence'), attribute('confidence')) IS NULL THEN NULL ELSE format_number(100 * coalesce(attribute('cue_confidence'), attribute('confidence')), 0) || ' %' END" subType="0" type="10" length="0"/>
-    <field comment="" typeName="" name="short_id" precision="0" expression="'S-' || lpad(to_string(to_int(regexp_substr(&quot;anomaly_id&quot;, '(\\d+)$'))), 3, '0')" subType="0" type="10" length="0"/>
-    <field comment="" typeName="" name="depth" precision="0" expression="CASE WHEN &quot;depth_m&quot; * 100 IS NULL THEN 'not characterised' WHEN &quot;depth_sigma_m&quot; * 100 IS NULL THEN format_number(&quot;depth_m&quot; * 100, 1) || ' cm' ELSE format_number(&quot;depth_m&quot; * 100, 1) || ' ± ' || format_number(&quot;depth_sigma_m&quot; * 100, 1) || ' cm' END" subType="0" type="10" length="0"/>
-    <field comment="" typeName="" name="diffusivity" precision="0" expression="CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 IS NULL THEN 'not characterised' WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 IS NULL THEN CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' mm²/s' ELSE CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' ± ' || CASE WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_sigma_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6))))) END || ' mm²/s' END" subType="0" type="10" length="0"/>
-    <field comment="" typeName="" name="likelihood" precision="0" expression="CASE WHEN attribute('p_mine') IS NULL THEN 'not estimated' ELSE format_number(100 * attribute('p_mine'), 0) || ' %' END" subType="0" type="10" length="0"/>
-    <field comment="" typeName="" name="cue_confidence_pct" precision="0" expression="CASE WHEN coalesce(attribute('cue_confidence'), attribute('confidence')) IS NULL THEN NULL ELSE format_number(100 * coalesce(attribute('cue_confidence'), attribute('confidence')), 0) || ' %' END" subType="0" type="10" length="0"/>
-    <field comment="" typeName="" name="short_id" precision="0" expression="'S-' || lpad(to_string(to_int(regexp_substr(&quot;anomaly_id&quot;, '(\\d+)$'))), 3, '0')" subType="0" type="10" length="0"/>
-    <field comment="" typeName="" name="depth" precision="0" expression="CASE WHEN &quot;depth_m&quot; * 100 IS NULL THEN 'not characterised' WHEN &quot;depth_sigma_m&quot; * 100 IS NULL THEN format_number(&quot;depth_m&quot; * 100, 1) || ' cm' ELSE format_number(&quot;depth_m&quot; * 100, 1) || ' ± ' || format_number(&quot;depth_sigma_m&quot; * 100, 1) || ' cm' END" subType="0" type="10" length="0"/>
-    <field comment="" typeName="" name="diffusivity" precision="0" expression="CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 IS NULL THEN 'not characterised' WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 IS NULL THEN CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' mm²/s' ELSE CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' ± ' || CASE WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_sigma_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6))))) END || ' mm²/s' END" subType="0" type="10" length="0"/>
-    <field comment="" typeName="" name="likelihood" precision="0" expression="CASE WHEN attribute('p_mine') IS NULL THEN 'not estimated' ELSE format_number(100 * attribute('p_mine'), 0) || ' %' END" subType="0" type="10" length="0"/>
-    <field comment="" typeName="" name="cue_confidence_pct" precision="0" expression="CASE WHEN coalesce(attribute('cue_confidence'), attribute('confidence')) IS NULL THEN NULL ELSE format_number(100 * coalesce(attribute('cue_confidence'), attribute('confidence')), 0) || ' %' END" subType="0" type="10" length="0"/>
+    <field typeName="" comment="" subType="0" name="short_id" precision="0" length="0" type="10" expression="'S-' || lpad(to_string(to_int(regexp_substr(&quot;anomaly_id&quot;, '(\\d+)$'))), 3, '0')"/>
+    <field typeName="" comment="" subType="0" name="depth" precision="0" length="0" type="10" expression="CASE WHEN &quot;depth_m&quot; * 100 IS NULL THEN 'not characterised' WHEN &quot;depth_sigma_m&quot; * 100 IS NULL THEN format_number(&quot;depth_m&quot; * 100, 1) || ' cm' ELSE format_number(&quot;depth_m&quot; * 100, 1) || ' ± ' || format_number(&quot;depth_sigma_m&quot; * 100, 1) || ' cm' END"/>
+    <field typeName="" comment="" subType="0" name="diffusivity" precision="0" length="0" type="10" expression="CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 IS NULL THEN 'not characterised' WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 IS NULL THEN CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' mm²/s' ELSE CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' ± ' || CASE WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_sigma_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6))))) END || ' mm²/s' END"/>
+    <field typeName="" comment="" subType="0" name="likelihood" precision="0" length="0" type="10" expression="CASE WHEN attribute('p_mine') IS NULL THEN 'not estimated' ELSE format_number(100 * attribute('p_mine'), 0) || ' %' END"/>
+    <field typeName="" comment="" subType="0" name="cue_confidence_pct" precision="0" length="0" type="10" expression="CASE WHEN coalesce(attribute('cue_confidence'), attribute('confidence')) IS NULL THEN NULL ELSE format_number(100 * coalesce(attribute('cue_confidence'), attribute('confidence')), 0) || ' %' END"/>
+    <field typeName="" comment="" subType="0" name="short_id" precision="0" length="0" type="10" expression="'S-' || lpad(to_string(to_int(regexp_substr(&quot;anomaly_id&quot;, '(\\d+)$'))), 3, '0')"/>
+    <field typeName="" comment="" subType="0" name="depth" precision="0" length="0" type="10" expression="CASE WHEN &quot;depth_m&quot; * 100 IS NULL THEN 'not characterised' WHEN &quot;depth_sigma_m&quot; * 100 IS NULL THEN format_number(&quot;depth_m&quot; * 100, 1) || ' cm' ELSE format_number(&quot;depth_m&quot; * 100, 1) || ' ± ' || format_number(&quot;depth_sigma_m&quot; * 100, 1) || ' cm' END"/>
+    <field typeName="" comment="" subType="0" name="diffusivity" precision="0" length="0" type="10" expression="CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 IS NULL THEN 'not characterised' WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 IS NULL THEN CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' mm²/s' ELSE CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' ± ' || CASE WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_sigma_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6))))) END || ' mm²/s' END"/>
+    <field typeName="" comment="" subType="0" name="likelihood" precision="0" length="0" type="10" expression="CASE WHEN attribute('p_mine') IS NULL THEN 'not estimated' ELSE format_number(100 * attribute('p_mine'), 0) || ' %' END"/>
+    <field typeName="" comment="" subType="0" name="cue_confidence_pct" precision="0" length="0" type="10" expression="CASE WHEN coalesce(attribute('cue_confidence'), attribute('confidence')) IS NULL THEN NULL ELSE format_number(100 * coalesce(attribute('cue_confidence'), attribute('confidence')), 0) || ' %' END"/>
+    <field typeName="" comment="" subType="0" name="short_id" precision="0" length="0" type="10" expression="'S-' || lpad(to_string(to_int(regexp_substr(&quot;anomaly_id&quot;, '(\\d+)$'))), 3, '0')"/>
+    <field typeName="" comment="" subType="0" name="depth" precision="0" length="0" type="10" expression="CASE WHEN &quot;depth_m&quot; * 100 IS NULL THEN 'not characterised' WHEN &quot;depth_sigma_m&quot; * 100 IS NULL THEN format_number(&quot;depth_m&quot; * 100, 1) || ' cm' ELSE format_number(&quot;depth_m&quot; * 100, 1) || ' ± ' || format_number(&quot;depth_sigma_m&quot; * 100, 1) || ' cm' END"/>
+    <field typeName="" comment="" subType="0" name="diffusivity" precision="0" length="0" type="10" expression="CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 IS NULL THEN 'not characterised' WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 IS NULL THEN CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' mm²/s' ELSE CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' ± ' || CASE WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_sigma_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6))))) END || ' mm²/s' END"/>
+    <field typeName="" comment="" subType="0" name="likelihood" precision="0" length="0" type="10" expression="CASE WHEN attribute('p_mine') IS NULL THEN 'not estimated' ELSE format_number(100 * attribute('p_mine'), 0) || ' %' END"/>
+    <field typeName="" comment="" subType="0" name="cue_confidence_pct" precision="0" length="0" type="10" expression="CASE WHEN coalesce(attribute('cue_confidence'), attribute('confidence')) IS NULL THEN NULL ELSE format_number(100 * coalesce(attribute('cue_confidence'), attribute('confidence')), 0) || ' %' END"/>
+    <field typeName="" comment="" subType="0" name="short_id" precision="0" length="0" type="10" expression="'S-' || lpad(to_string(to_int(regexp_substr(&quot;anomaly_id&quot;, '(\\d+)$'))), 3, '0')"/>
+    <field typeName="" comment="" subType="0" name="depth" precision="0" length="0" type="10" expression="CASE WHEN &quot;depth_m&quot; * 100 IS NULL THEN 'not characterised' WHEN &quot;depth_sigma_m&quot; * 100 IS NULL THEN format_number(&quot;depth_m&quot; * 100, 1) || ' cm' ELSE format_number(&quot;depth_m&quot; * 100, 1) || ' ± ' || format_number(&quot;depth_sigma_m&quot; * 100, 1) || ' cm' END"/>
+    <field typeName="" comment="" subType="0" name="diffusivity" precision="0" length="0" type="10" expression="CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 IS NULL THEN 'not characterised' WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 IS NULL THEN CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' mm²/s' ELSE CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' ± ' || CASE WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_sigma_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6))))) END || ' mm²/s' END"/>
+    <field typeName="" comment="" subType="0" name="likelihood" precision="0" length="0" type="10" expression="CASE WHEN attribute('p_mine') IS NULL THEN 'not estimated' ELSE format_number(100 * attribute('p_mine'), 0) || ' %' END"/>
+    <field typeName="" comment="" subType="0" name="cue_confidence_pct" precision="0" length="0" type="10" expression="CASE WHEN coalesce(attribute('cue_confidence'), attribute('confidence')) IS NULL THEN NULL ELSE format_number(100 * coalesce(attribute('cue_confidence'), attribute('confidence')), 0) || ' %' END"/>
   </expressionfields>
-  <attributetableconfig sortOrder="0" sortExpression="coalesce(attribute('priority'), 1000000 * (CASE WHEN &quot;class_cue&quot; = 'at_mine' THEN 0 WHEN &quot;class_cue&quot; = 'ap_mine' THEN 1 WHEN &quot;class_cue&quot; = 'unknown' THEN 2 ELSE 3 END) - round(1000 * max(abs(&quot;contrast_day_k&quot;), abs(&quot;contrast_night_k&quot;))))" actionWidgetStyle="dropDown">
+  <attributetableconfig actionWidgetStyle="dropDown" sortExpression="coalesce(attribute('priority'), 1000000 * (CASE WHEN &quot;class_cue&quot; = 'at_mine' THEN 0 WHEN &quot;class_cue&quot; = 'ap_mine' THEN 1 WHEN &quot;class_cue&quot; = 'unknown' THEN 2 ELSE 3 END) - round(1000 * max(abs(&quot;contrast_day_k&quot;), abs(&quot;contrast_night_k&quot;))))" sortOrder="0">
     <columns>
-      <column width="-1" hidden="0" name="anomaly_id" type="field"/>
-      <column width="-1" hidden="0" name="polarity" type="field"/>
-      <column width="-1" hidden="0" name="area_m2" type="field"/>
-      <column width="-1" hidden="0" name="p_mine" type="field"/>
-      <column width="-1" hidden="0" name="priority" type="field"/>
-      <column width="-1" hidden="0" name="cue_confidence" type="field"/>
-      <column width="-1" hidden="0" name="set_aside_reason" type="field"/>
-      <column width="-1" hidden="0" name="short_id" type="field"/>
-      <column width="-1" hidden="0" name="depth" type="field"/>
-      <column width="-1" hidden="0" name="diffusivity" type="field"/>
-      <column width="-1" hidden="0" name="likelihood" type="field"/>
-      <column width="-1" hidden="0" name="cue_confidence_pct" type="field"/>
-      <column width="-1" hidden="1" type="actions"/>
+      <column hidden="0" width="-1" name="anomaly_id" type="field"/>
+      <column hidden="0" width="-1" name="polarity" type="field"/>
+      <column hidden="0" width="-1" name="area_m2" type="field"/>
+      <column hidden="0" width="-1" name="p_mine" type="field"/>
+      <column hidden="0" width="-1" name="priority" type="field"/>
+      <column hidden="0" width="-1" name="cue_confidence" type="field"/>
+      <column hidden="0" width="-1" name="set_aside_reason" type="field"/>
+      <column hidden="0" width="-1" name="short_id" type="field"/>
+      <column hidden="0" width="-1" name="depth" type="field"/>
+      <column hidden="0" width="-1" name="diffusivity" type="field"/>
+      <column hidden="0" width="-1" name="likelihood" type="field"/>
+      <column hidden="0" width="-1" name="cue_confidence_pct" type="field"/>
+      <column hidden="1" width="-1" type="actions"/>
     </columns>
   </attributetableconfig>
   <conditionalstyles>
@@ -641,57 +646,57 @@
   <featformsuppress>0</featformsuppress>
   <editorlayout>tablayout</editorlayout>
   <attributeEditorForm>
-    <attributeEditorContainer name="Suspect" visibilityExpression="" groupBox="0" columnCount="1" showLabel="1" visibilityExpressionEnabled="0">
-      <attributeEditorContainer name="Identification" visibilityExpression="" groupBox="1" columnCount="1" showLabel="1" visibilityExpressionEnabled="0">
+    <attributeEditorContainer columnCount="1" visibilityExpression="" visibilityExpressionEnabled="0" groupBox="0" name="Suspect" showLabel="1">
+      <attributeEditorContainer columnCount="1" visibilityExpression="" visibilityExpressionEnabled="0" groupBox="1" name="Identification" showLabel="1">
         <attributeEditorField name="short_id" index="26" showLabel="1"/>
         <attributeEditorField name="anomaly_id" index="0" showLabel="1"/>
-        <attributeEditorField name="priority" index="23" showLabel="1"/>
+        <attributeEditorField name="priority" index="17" showLabel="1"/>
         <attributeEditorField name="class_cue" index="14" showLabel="1"/>
         <attributeEditorField name="likelihood" index="29" showLabel="1"/>
         <attributeEditorField name="cue_confidence_pct" index="30" showLabel="1"/>
         <attributeEditorField name="status" index="12" showLabel="1"/>
         <attributeEditorField name="polarity" index="13" showLabel="1"/>
-        <attributeEditorField name="set_aside_reason" index="25" showLabel="1"/>
+        <attributeEditorField name="set_aside_reason" index="18" showLabel="1"/>
       </attributeEditorContainer>
-      <attributeEditorContainer name="Burial depth and soil" visibilityExpression="" groupBox="1" columnCount="1" showLabel="1" visibilityExpressionEnabled="0">
+      <attributeEditorContainer columnCount="1" visibilityExpression="" visibilityExpressionEnabled="0" groupBox="1" name="Burial depth and soil" showLabel="1">
         <attributeEditorField name="depth" index="27" showLabel="1"/>
         <attributeEditorField name="diffusivity" index="28" showLabel="1"/>
       </attributeEditorContainer>
-      <attributeEditorContainer name="Thermal contrast" visibilityExpression="" groupBox="1" columnCount="1" showLabel="1" visibilityExpressionEnabled="0">
-        <attributeEditorField name="contrast_day_k" index="17" showLabel="1"/>
-        <attributeEditorField name="contrast_night_k" index="18" showLabel="1"/>
-        <attributeEditorField name="n_scans" index="16" showLabel="1"/>
+      <attributeEditorContainer columnCount="1" visibilityExpression="" visibilityExpressionEnabled="0" groupBox="1" name="Thermal contrast" showLabel="1">
+        <attributeEditorField name="contrast_day_k" index="20" showLabel="1"/>
+        <attributeEditorField name="contrast_night_k" index="21" showLabel="1"/>
+        <attributeEditorField name="mine_curve_r" index="22" showLabel="1"/>
+        <attributeEditorField name="n_scans" index="19" showLabel="1"/>
       </attributeEditorContainer>
-      <attributeEditorContainer name="Shape" visibilityExpression="" groupBox="1" columnCount="1" showLabel="1" visibilityExpressionEnabled="0">
+      <attributeEditorContainer columnCount="1" visibilityExpression="" visibilityExpressionEnabled="0" groupBox="1" name="Shape" showLabel="1">
         <attributeEditorField name="diameter_m" index="6" showLabel="1"/>
         <attributeEditorField name="area_m2" index="5" showLabel="1"/>
         <attributeEditorField name="circularity" index="7" showLabel="1"/>
       </attributeEditorContainer>
     </attributeEditorContainer>
-    <attributeEditorContainer name="Contrast curve" visibilityExpression="" groupBox="0" columnCount="1" showLabel="1" visibilityExpressionEnabled="0">
-      <attributeEditorContainer name="Contrast curve" visibilityExpression="" groupBox="1" columnCount="1" showLabel="1" visibilityExpressionEnabled="0">
-        <attributeEditorField name="figure" index="20" showLabel="1"/>
+    <attributeEditorContainer columnCount="1" visibilityExpression="" visibilityExpressionEnabled="0" groupBox="0" name="Contrast curve" showLabel="1">
+      <attributeEditorContainer columnCount="1" visibilityExpression="" visibilityExpressionEnabled="0" groupBox="1" name="Contrast curve" showLabel="1">
+        <attributeEditorField name="figure" index="24" showLabel="1"/>
       </attributeEditorContainer>
     </attributeEditorContainer>
-    <attributeEditorContainer name="Position" visibilityExpression="" groupBox="0" columnCount="1" showLabel="1" visibilityExpressionEnabled="0">
-      <attributeEditorContainer name="Position" visibilityExpression="" groupBox="1" columnCount="1" showLabel="1" visibilityExpressionEnabled="0">
+    <attributeEditorContainer columnCount="1" visibilityExpression="" visibilityExpressionEnabled="0" groupBox="0" name="Position" showLabel="1">
+      <attributeEditorContainer columnCount="1" visibilityExpression="" visibilityExpressionEnabled="0" groupBox="1" name="Position" showLabel="1">
         <attributeEditorField name="x" index="1" showLabel="1"/>
         <attributeEditorField name="y" index="2" showLabel="1"/>
         <attributeEditorField name="lat" index="3" showLabel="1"/>
         <attributeEditorField name="lon" index="4" showLabel="1"/>
-        <attributeEditorField name="fix_quality" index="19" showLabel="1"/>
+        <attributeEditorField name="fix_quality" index="23" showLabel="1"/>
       </attributeEditorContainer>
     </attributeEditorContainer>
-    <attributeEditorContainer name="Stored values" visibilityExpression="" groupBox="0" columnCount="1" showLabel="1" visibilityExpressionEnabled="0">
-      <attributeEditorContainer name="Stored values" visibilityExpression="" groupBox="1" columnCount="1" showLabel="1" visibilityExpressionEnabled="0">
+    <attributeEditorContainer columnCount="1" visibilityExpression="" visibilityExpressionEnabled="0" groupBox="0" name="Stored values" showLabel="1">
+      <attributeEditorContainer columnCount="1" visibilityExpression="" visibilityExpressionEnabled="0" groupBox="1" name="Stored values" showLabel="1">
         <attributeEditorField name="depth_m" index="8" showLabel="1"/>
         <attributeEditorField name="depth_sigma_m" index="9" showLabel="1"/>
         <attributeEditorField name="diffusivity_m2s" index="10" showLabel="1"/>
         <attributeEditorField name="diffusivity_sigma_m2s" index="11" showLabel="1"/>
-        <attributeEditorField name="p_mine" index="22" showLabel="1"/>
-        <attributeEditorField name="cue_confidence" index="24" showLabel="1"/>
-        <attributeEditorField name="confidence" index="15" showLabel="1"/>
-        <attributeEditorField name="contrast_series" index="21" showLabel="1"/>
+        <attributeEditorField name="p_mine" index="16" showLabel="1"/>
+        <attributeEditorField name="cue_confidence" index="15" showLabel="1"/>
+        <attributeEditorField name="contrast_series" index="25" showLabel="1"/>
       </attributeEditorContainer>
     </attributeEditorContainer>
   </attributeEditorForm>

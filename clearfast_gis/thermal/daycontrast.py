@@ -69,6 +69,10 @@ class DayContrast:
     delivered_fraction, show_snr, show_share : float
         Share of the contrast the mosaics deliver, the detector's cut in noise sigmas and
         the share of the scans that must reach it.
+    curves_k : ndarray, shape (D, S), or None
+        The reference mine's modelled contrast (centre minus background, signed) at each
+        depth and scan time, K: the diurnal curve a buried mine follows on that day
+        (:func:`clearfast_gis.detection.curve.mine_curve_match`).
     """
 
     depths_m: np.ndarray
@@ -80,6 +84,7 @@ class DayContrast:
     delivered_fraction: float = DELIVERED_FRACTION
     show_snr: float = SHOW_SNR
     show_share: float = SHOW_SCAN_SHARE
+    curves_k: np.ndarray | None = None
 
     @property
     def deepest_showing_m(self) -> float:
@@ -142,10 +147,11 @@ def day_contrast(forcing: Forcing, soil: Soil, scan_time_s: np.ndarray, noise_k:
         The detector's cut in noise sigmas and its voting share of the scans.
     """
     model = ObjectModel(soil, forcing, scan_time_s, REFERENCE_RADIUS_M)
-    peaks, shares = [], []
+    peaks, shares, curves = [], [], []
     for d in depths_m:
         obj = BuriedObject(REFERENCE_RADIUS_M, REFERENCE_HEIGHT_M, d, MATERIALS["tnt"])
-        c = np.abs(model.surface_at(obj, [0.0])[:, 0] - model.background_k)
+        curves.append(model.surface_at(obj, [0.0])[:, 0] - model.background_k)
+        c = np.abs(curves[-1])
         peaks.append(float(np.max(c)))
         shares.append(float(np.mean(DELIVERED_FRACTION * c >= show_snr * noise_k)))
     dt_h = np.diff(forcing.time_s, prepend=forcing.time_s[0]) / 3600.0
@@ -153,7 +159,8 @@ def day_contrast(forcing: Forcing, soil: Soil, scan_time_s: np.ndarray, noise_k:
     return DayContrast(np.asarray(depths_m, float), np.asarray(peaks), np.asarray(shares),
                        float(noise_k),
                        clear_sky_index(forcing, lat_deg, lon_deg), rain,
-                       DELIVERED_FRACTION, float(show_snr), float(show_share))
+                       DELIVERED_FRACTION, float(show_snr), float(show_share),
+                       np.asarray(curves, float))
 
 
 def contrast_noise_k(inversions: dict, survey=None, clutter_k: float = float("nan")) -> float:

@@ -94,3 +94,24 @@ def test_a_mine_left_out_of_most_scans_is_still_found():
     _, fixed = det(stack, times, TRANSFORM, PIXEL_M, 0.0, 0.5, 0.06, 0.01, level=12,
                    gamma=None, max_anomalies=50)
     assert all(np.hypot(f.row - 50.0, f.col - 50.0) > 3.0 for f in fixed)
+
+
+def test_object_inside_its_patch_is_measured_against_the_patch():
+    """A compact object split from a warm patch has no free ring pixel: its contrast is
+    taken against the patch around it (it was NaN in every scan, p_mine at the bottom)."""
+    from clearfast_gis.detection.features import blob_features
+
+    labels = np.zeros((60, 60), np.int32)
+    yy, xx = np.mgrid[:60, :60]
+    labels[(yy - 30) ** 2 + (xx - 30) ** 2 <= 20 ** 2] = 1  # the patch
+    labels[(yy - 30) ** 2 + (xx - 30) ** 2 <= 3 ** 2] = 2  # the object inside it
+    stack = np.full((4, 60, 60), 20.0, np.float32)
+    stack[:, labels == 1] += 1.0  # the patch 1 K warm
+    stack[:, labels == 2] += np.array([1.5, 1.2, 0.8, 1.4], np.float32)[:, None]
+    stack[:, labels == 1] += 0.01 * np.random.default_rng(0).standard_normal(
+        (4, int((labels == 1).sum()))).astype(np.float32)
+    feats = {f.id: f for f in blob_features(labels, stack, pixel_size_m=0.02)}
+    np.testing.assert_allclose(feats[2].contrast_k, [0.5, 0.2, -0.2, 0.4], atol=0.02)
+    assert feats[2].score > 0
+    # a blob with a free ring keeps it: the patch against the soil outside
+    np.testing.assert_allclose(feats[1].ring_k, 20.0, atol=1e-6)
