@@ -34,13 +34,10 @@ link at a time (BENCHMARKS.md, "Depth bias"; ``benchmarks/depth_bias.py``):
 ================================  =============  ==========================================
 term                              depth, cm      how it was measured
 ================================  =============  ==========================================
-object height (the survey's mine  0.15           table built for 5 cm and 8 cm objects
-types: AP M2A4 8 cm, AT M6A2                     against an 8 cm mine: 0.3-0.5 cm apart,
-9.4 cm; table at 8 cm)                           0.1-0.17 cm per cm of height; the AT mine
-                                                 is 1.4 cm taller than the table (0.14-0.23
-                                                 cm), the AP mine as tall
-background ring (halo, texture)   0.05           ring at 1.5-2.5 radii against 5 cm beyond
-                                                 the halo: < 0.05 cm
+object height (4-10 cm mines,     0.3            table built for 5 cm and 8 cm objects
+table at 8 cm)                                   against an 8 cm mine: 0.3-0.5 cm apart
+background ring (halo, texture)   0.1            ring at 1.5-2.5 radii against 5 cm beyond
+                                                 the halo
 soil terms (diffusivity, surface  0.2            surface terms from the thermocouple
 fit, heat capacity)                              against the exact soil
 depth-proportional part           10 % of depth  deep, small objects trade depth for
@@ -76,7 +73,7 @@ GAIN_TERMS = {"blur_registration": 0.08, "emissivity_planck": 0.06}
 OFFSET_TERM_K = 0.012
 """1-sigma error of the contrast curve's level, K (module notes)."""
 
-DEPTH_TERMS_M = {"object_height": 0.0015, "background_ring": 0.0005, "soil_terms": 0.002}
+DEPTH_TERMS_M = {"object_height": 0.003, "background_ring": 0.001, "soil_terms": 0.002}
 """Constant 1-sigma depth terms of the model, m (module notes)."""
 
 DEPTH_RELATIVE = 0.10

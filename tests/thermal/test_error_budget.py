@@ -38,7 +38,7 @@ def curve(scale=1.0, n=6):
 def test_without_jacobian_only_the_model_terms_add_in_quadrature():
     out = with_chain_errors(inversion())
     const = math.sqrt(sum(v * v for v in DEPTH_TERMS_M.values()))
-    assert const == pytest.approx(math.sqrt(0.0015**2 + 0.0005**2 + 0.002**2))
+    assert const == pytest.approx(math.sqrt(0.003**2 + 0.001**2 + 0.002**2))
     assert out.depth_sigma_m == pytest.approx(math.hypot(0.001, const, DEPTH_RELATIVE * 0.02))
     assert out.log10_alpha_sigma == pytest.approx(math.hypot(0.04, 0.04, 0.09))
     assert math.hypot(*LOG10_ALPHA_TERMS.values()) == pytest.approx(math.hypot(0.04, 0.09))
