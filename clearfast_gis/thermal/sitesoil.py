@@ -1,5 +1,5 @@
-"""The site's soil for the inversion (diffusivity from the thermocouples, heat capacity from
-the sand end-members, surface terms from the shallowest thermocouple) and the
+"""The site's soil for the inversion (diffusivity from the thermocouples; albedo, convective
+scale, surface wetness and heat capacity from the shallowest thermocouple) and the
 characterisation of each anomaly with the thermal model on it.
 
 Why the shallowest thermocouple and not the mosaics' background: the mosaics hold *apparent*
@@ -26,7 +26,7 @@ from clearfast_gis.thermal.forcing import Forcing
 from clearfast_gis.thermal.inversion import Inversion, invert_anomaly
 from clearfast_gis.thermal.materials import MATERIALS, Soil, get_soil
 from clearfast_gis.thermal.soilfit import fit_soil_diffusivity, soil_log_field
-from clearfast_gis.thermal.surface_fit import fit_surface_parameters
+from clearfast_gis.thermal.surface_fit import fit_surface_balance, fit_surface_parameters
 from clearfast_gis.thermal.table import build_site_table
 from clearfast_gis.units import ZERO_CELSIUS_K
 
@@ -62,8 +62,11 @@ def soil_from_diffusivity(alpha_m2s: float) -> Soil:
 
 def site_soil(soil_log, forcing: Forcing, times_s: np.ndarray, background_c: np.ndarray
               ) -> tuple[Soil, float, float]:
-    """The site's soil: diffusivity from the thermocouples, surface terms from the shallowest
-    thermocouple (<= 5 cm), else from the background's apparent temperature.
+    """The site's soil: diffusivity from the thermocouples; albedo, convective scale, surface
+    wetness and heat capacity from the shallowest thermocouple (<= 5 cm,
+    :func:`~clearfast_gis.thermal.surface_fit.fit_surface_balance`); without one, albedo and
+    convective scale from the background's apparent temperature (a dry surface, the sand
+    end-members' heat capacity).
 
     Parameters
     ----------
@@ -92,9 +95,8 @@ def site_soil(soil_log, forcing: Forcing, times_s: np.ndarray, background_c: np.
         if sel.size >= 4:
             sel = sel[np.unique(np.linspace(0, sel.size - 1, MAX_SURFACE_SAMPLES).round()
                                 .astype(int))]
-            soil, _ = fit_surface_parameters(soil, forcing, t[sel],
-                                             temp[sel] + ZERO_CELSIUS_K,
-                                             depth_m=float(depths[shallow]))
+            soil, _ = fit_surface_balance(soil, forcing, t[sel], temp[sel] + ZERO_CELSIUS_K,
+                                          depth_m=float(depths[shallow]))
             return soil, alpha, sigma
     ok = np.isfinite(background_c)
     if ok.sum() >= 4:
