@@ -2,7 +2,8 @@
 
 A dry model fitted to a soil that evaporates moved the latent heat into the albedo and put AP
 mines 1-2 cm too shallow on clay and loam (issue #22); the balance fit (albedo, convective
-scale, wetness, heat capacity) takes them from the thermocouple and the weather alone.
+scale, wetness, heat capacity) takes them from the thermocouple and the weather alone. Under
+grass, the cover the survey records for its site puts the soil under the canopy.
 """
 
 from __future__ import annotations
@@ -14,9 +15,15 @@ import pytest
 
 from clearfast_gis.simulate.surface import soils
 from clearfast_gis.thermal import simulate_background
+from clearfast_gis.thermal.canopy import under_canopy
 from clearfast_gis.thermal.inversion import invert_anomaly
 from clearfast_gis.thermal.moisture import wetness_factor
-from clearfast_gis.thermal.sitesoil import CHAIN_TABLE_CENTRE, soil_from_diffusivity
+from clearfast_gis.thermal.sitesoil import (
+    CHAIN_TABLE_CENTRE,
+    chain_site_table,
+    site_soil,
+    soil_from_diffusivity,
+)
 from clearfast_gis.thermal.soils import soil_of_type
 from clearfast_gis.thermal.surface_fit import fit_surface_balance, fit_surface_parameters
 from clearfast_gis.thermal.table import build_site_table
@@ -99,3 +106,33 @@ def test_the_balance_fit_needs_a_buried_sensor(forcing):
 
     with pytest.raises(InvalidInput):
         fit_surface_balance(soils()["site"], forcing, SCANS_S, np.full(6, 290.0), depth_m=0.0)
+
+
+def test_mines_under_grass_with_the_site_cover_come_out_at_their_depth(forcing):
+    """Under a 40 % grass cover the soil (and its thermocouple) sees less sun and the leaves'
+    long-wave, and the camera sees 0.6 of a buried mine's contrast: without the cover the
+    mines came out 1-1.6 cm too deep; with the cover the survey records, at their depth."""
+    cover = 0.4
+    truth = replace(soils()["site"], albedo=0.26)
+    shaded = under_canopy(forcing, cover)
+    t = DAY0_S + 600.0 * np.arange(145)
+    run = simulate_background(truth, shaded, t, depths_m=(0.02, 0.05, 0.10, 0.20, 0.50))
+    log = {"time_s": t, "depth_m": np.array([0.02, 0.05, 0.10, 0.20, 0.50]),
+           "temp_c": run.profile_k - 273.15}
+    la = np.log10(1e-7)
+    seen = (1 - cover) * build_site_table(
+        shaded, truth, RADIUS_M, SCANS_S, height_m=HEIGHT_M, depths_m=(0.0, *DEPTHS_M, 0.05),
+        log10_alpha=(la - 0.2, la - 0.1, la, la + 0.1),
+        centre=CHAIN_TABLE_CENTRE).contrast_for(RADIUS_M, SCANS_S)[1:1 + len(DEPTHS_M), 2]
+    base = np.full(SCANS_S.size, 290.0)
+    nan = np.full(SCANS_S.size, np.nan)
+    for canopy, ok in ((0.0, False), (cover, True)):
+        soil, _, _ = site_soil(log, forcing, SCANS_S, nan, canopy=canopy)
+        tab = chain_site_table(under_canopy(forcing, canopy), soil, RADIUS_M, SCANS_S, canopy)
+        err = np.array([invert_anomaly(SCANS_S, base + c, base, forcing, soil, RADIUS_M,
+                                       noise_k=0.05, table=tab).depth_m - d
+                        for d, c in zip(DEPTHS_M, seen, strict=True)])
+        if ok:
+            assert np.all(np.abs(err) < 0.0025), err
+        else:
+            assert np.all(err > 0.007), err
