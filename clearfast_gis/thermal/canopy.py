@@ -17,6 +17,10 @@ from clearfast_gis.units import STEFAN_BOLTZMANN
 LEAF_EMISSIVITY = 0.97
 """Broadband long-wave emissivity of grass leaves (Campbell & Norman 1998, Table 11.3)."""
 
+RECORDED_COVER_SIGMA = 0.1
+"""1-sigma error of a cover a survey team records by eye (0-1 scale): the share of the
+contrast seen through the canopy is uncertain by this over ``1 - cover``."""
+
 
 def under_canopy(forcing: Forcing, cover: float) -> Forcing:
     """The weather the soil sees under a grass canopy of cover fraction ``cover`` (0-1).
@@ -37,3 +41,11 @@ def seen_share(cover: float) -> float:
     """Share of the soil's surface (and of a buried object's contrast) seen through a canopy
     of cover fraction ``cover``: ``1 - cover``."""
     return 1.0 - min(max(float(cover), 0.0), 1.0)
+
+
+def cover_gain_sigma(cover: float) -> float:
+    """1-sigma relative error of the seen contrast from the recorded cover:
+    :data:`RECORDED_COVER_SIGMA` / ``(1 - cover)`` under a canopy, 0 on bare ground."""
+    if cover <= 0.0:
+        return 0.0
+    return RECORDED_COVER_SIGMA / max(seen_share(cover), RECORDED_COVER_SIGMA)

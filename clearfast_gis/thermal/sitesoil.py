@@ -21,7 +21,7 @@ import numpy as np
 
 from clearfast_gis.detection.features import AnomalyFeatures
 from clearfast_gis.progress import NULL_PROGRESS, Progress
-from clearfast_gis.thermal.canopy import seen_share, under_canopy
+from clearfast_gis.thermal.canopy import cover_gain_sigma, seen_share, under_canopy
 from clearfast_gis.thermal.error_budget import with_chain_errors
 from clearfast_gis.thermal.forcing import Forcing
 from clearfast_gis.thermal.inversion import Inversion, invert_anomaly
@@ -154,7 +154,8 @@ def characterise(features: list[AnomalyFeatures], times_s: np.ndarray, forcing: 
         The site's fitted soil.
     canopy : float
         Grass cover recorded for the site, 0-1: the objects lie under it and their contrast
-        is seen times ``1 - canopy`` (:mod:`clearfast_gis.thermal.canopy`).
+        is seen times ``1 - canopy`` (:mod:`clearfast_gis.thermal.canopy`), a gain uncertain
+        by :func:`~clearfast_gis.thermal.canopy.cover_gain_sigma` (in the sigmas).
 
     Returns
     -------
@@ -180,7 +181,8 @@ def characterise(features: list[AnomalyFeatures], times_s: np.ndarray, forcing: 
         r_tab = float(np.clip(r, nodes.min(), nodes.max()))
         if (np.isfinite(centre) & np.isfinite(ring)).sum() >= 4:
             out[f.id] = with_chain_errors(invert_anomaly(times_s, centre, ring, forcing, soil,
-                                                         r_tab, table=table))
+                                                         r_tab, table=table),
+                                          cover_gain_sigma(canopy))
         progress.advance()
     progress.close()
     return out

@@ -136,3 +136,21 @@ def test_mines_under_grass_with_the_site_cover_come_out_at_their_depth(forcing):
             assert np.all(np.abs(err) < 0.0025), err
         else:
             assert np.all(err > 0.007), err
+
+
+def test_a_recorded_cover_is_uncertain_and_widens_the_depth_sigma(forcing):
+    from clearfast_gis.thermal.canopy import RECORDED_COVER_SIGMA, cover_gain_sigma
+    from clearfast_gis.thermal.error_budget import with_chain_errors
+
+    assert cover_gain_sigma(0.0) == 0.0
+    assert cover_gain_sigma(0.4) == pytest.approx(RECORDED_COVER_SIGMA / 0.6)
+    soil = soils()["site"]
+    tab = build_site_table(forcing, soil, RADIUS_M, SCANS_S, height_m=HEIGHT_M,
+                           centre=CHAIN_TABLE_CENTRE)
+    curve = tab.contrast_for(RADIUS_M, SCANS_S)[2, 2]          # a node: 1-2 cm, TNT-like
+    base = np.full(SCANS_S.size, 290.0)
+    inv = invert_anomaly(SCANS_S, base + curve, base, forcing, soil, RADIUS_M, noise_k=0.05,
+                         table=tab)
+    bare, grass = with_chain_errors(inv), with_chain_errors(inv, cover_gain_sigma(0.4))
+    assert grass.depth_sigma_m > 1.1 * bare.depth_sigma_m
+    assert with_chain_errors(inv, 0.0) == bare
