@@ -38,11 +38,12 @@ HEAT_CAPACITY_BOUNDS_JM3K = (0.9e6, 3.2e6)
 """Fitted soil heat capacity range, J m-3 K-1 (the soil types' dry 0.96 to saturated 3.05
 MJ m-3 K-1, ``thermal/soils.py``)."""
 WET_RMS_RATIO = 0.8
-"""The surface is modelled wet (latent heat, dew) only when the wet fit leaves at most this
-share of the dry fit's rms misfit. On the demo surveys of seeds 10 and 11 the evaporating
-soils (clay, loam, the tropics, both southern seasons, evaporating sand) gave 0.05-0.37 and
-the twin's water-free sand (with and without grass) 0.99-1.01; a wet model there adds dew
-the soil does not have and lowered the clear day's modelled contrast by 4 %."""
+"""The surface is modelled wet (latent heat, dew, a fitted heat capacity) only when the wet
+fit leaves at most this share of the dry fit's rms misfit. On the demo surveys of seeds 10 and
+11 the evaporating soils (clay, loam, the tropics, both southern seasons, evaporating sand)
+gave 0.06-0.13 (0.05-0.37 against a dry fit with its heat capacity free) and the twin's
+water-free sand, with and without grass, 0.96-1.00; a wet model there adds dew the soil does
+not have (it lowered the clear day's modelled contrast by 4 %)."""
 WETNESS_STARTS = (0.05, 0.5, 1.0)
 """Starting wetnesses of the balance fit (the wetness factor is flat near 0 and above 1, so
 one start can stall); the best of the fits is kept."""
@@ -141,9 +142,10 @@ def fit_surface_balance(
     wetness that make the 1-D model match a thermocouple at ``depth_m``, the diffusivity
     held.
 
-    Two fits: a dry surface (albedo, convective scale, heat capacity) and a wet one (the
-    same and the wetness); the wet one is kept when it leaves at most :data:`WET_RMS_RATIO`
-    of the dry one's rms misfit. The latent heat follows
+    Two fits: a wet surface (albedo, convective scale, wetness, heat capacity) and a dry one
+    (:func:`fit_surface_parameters`: albedo and convective scale, ``soil``'s heat capacity);
+    the wet one is kept when it leaves at most :data:`WET_RMS_RATIO` of the dry one's rms
+    misfit. The latent heat follows
     :mod:`clearfast_gis.thermal.moisture` with the logged humidity and rain; the surface
     layer is the generic one of
     :func:`~clearfast_gis.thermal.moisture.surface_water_of_wetness` (the texture is not
@@ -169,9 +171,9 @@ def fit_surface_balance(
     Returns
     -------
     soil : Soil
-        ``soil`` with the fitted ``albedo``, ``hc_scale``, ``rho_c_jm3k`` / ``k_wmk``
-        (:data:`HEAT_CAPACITY_BOUNDS_JM3K`) and ``water`` (wetness :data:`WETNESS_BOUNDS`;
-        None for a dry surface).
+        ``soil`` with the fitted ``albedo``, ``hc_scale`` and, for a wet surface, ``water``
+        (wetness :data:`WETNESS_BOUNDS`) and ``rho_c_jm3k`` / ``k_wmk``
+        (:data:`HEAT_CAPACITY_BOUNDS_JM3K`); a dry surface keeps ``soil``'s (no water).
     rms_k : float
         Root-mean-square misfit left, K.
     """
@@ -182,11 +184,11 @@ def fit_surface_balance(
     alpha = soil.alpha_m2s
 
     def model(p: np.ndarray) -> Soil:
-        """p: albedo, log hc_scale, [wetness,] heat capacity (MJ m-3 K-1)."""
-        rho_c = float(p[-1]) * 1e6
+        """p: albedo, log hc_scale, wetness, heat capacity (MJ m-3 K-1)."""
+        rho_c = float(p[3]) * 1e6
         return replace(soil, albedo=float(p[0]), hc_scale=float(np.exp(p[1])),
-                       water=surface_water_of_wetness(float(p[2])) if p.size > 3 else None,
-                       rho_c_jm3k=rho_c, k_wmk=alpha * rho_c)
+                       water=surface_water_of_wetness(float(p[2])), rho_c_jm3k=rho_c,
+                       k_wmk=alpha * rho_c)
 
     def resid(p: np.ndarray) -> np.ndarray:
         return _model_temperature(model(p), forcing, t, depth_m, bottom, dt_s) - obs
@@ -196,16 +198,14 @@ def fit_surface_balance(
     hi = [ALBEDO_BOUNDS[1], np.log(HC_SCALE_BOUNDS[1]), WETNESS_BOUNDS[1],
           HEAT_CAPACITY_BOUNDS_JM3K[1] / 1e6]
     rho_c0 = float(np.clip(soil.rho_c_jm3k / 1e6, lo[3] + 0.01, hi[3] - 0.01))
-    dry_lo, dry_hi = [lo[0], lo[1], lo[3]], [hi[0], hi[1], hi[3]]
-    dry = least_squares(resid, [*_albedo_hc_start(soil), rho_c0], bounds=(dry_lo, dry_hi),
-                        diff_step=1e-3)
     best = None
     for w0 in WETNESS_STARTS:
         sol = least_squares(resid, [*_albedo_hc_start(soil), w0, rho_c0], bounds=(lo, hi),
                             diff_step=1e-3)
         if best is None or sol.cost < best.cost:
             best = sol
-    rms_dry, rms_wet = (float(np.sqrt(np.mean(f.fun**2))) for f in (dry, best))
+    rms_wet = float(np.sqrt(np.mean(best.fun**2)))
+    dry, rms_dry = fit_surface_parameters(soil, forcing, t, obs, bottom, dt_s, depth_m)
     if rms_wet > WET_RMS_RATIO * rms_dry:
-        best = dry
+        return dry, rms_dry
     return model(best.x), float(np.sqrt(np.mean(best.fun**2)))
