@@ -80,15 +80,17 @@ def characterise_suspects(c: RunContext) -> Characterisation:
     forcing = forcing_from_weather(ctx.weather)
     background, clutter_k = background_levels(det.stack, det.labels,
                                               c[stages.READ].grid.pixel_size)
-    soil, alpha, sigma = site_soil(logs.soil, forcing, det.times_s, background)
-    inversions = characterise(det.features, det.times_s, forcing, soil, progress=c.progress)
     site = ctx.survey.manifest["site"]
+    canopy = float(site.get("vegetation_cover", 0.0))
+    soil, alpha, sigma = site_soil(logs.soil, forcing, det.times_s, background, canopy)
+    inversions = characterise(det.features, det.times_s, forcing, soil, progress=c.progress,
+                              canopy=canopy)
     noise = contrast_noise_k(inversions, ctx.survey, clutter_k)
     o = c.options
     day = day_contrast(forcing, soil, det.times_s, noise, float(site["latitude_deg"]),
                        float(site["longitude_deg"]),
                        show_snr=(o.threshold_snr - PEAK_LIFT_SIGMA) if o.threshold_snr
-                       else SHOW_SNR, show_share=o.level_fraction)
+                       else SHOW_SNR, show_share=o.level_fraction, canopy=canopy)
     return Characterisation(inversions, alpha, sigma, day=day)
 
 

@@ -26,16 +26,12 @@ import numpy as np
 from clearfast_gis.simulate.emissivity import band_emissivity
 from clearfast_gis.simulate.objects import SceneObject
 from clearfast_gis.simulate.scene import SceneFields
-from clearfast_gis.simulate.thin_layers import (
-    LEAF_EMISSIVITY,
-    leaf_temperature_k,
-    plate_temperature_k,
-)
+from clearfast_gis.simulate.thin_layers import leaf_temperature_k, plate_temperature_k
+from clearfast_gis.thermal.canopy import seen_share, under_canopy
 from clearfast_gis.thermal.forcing import Forcing
 from clearfast_gis.thermal.forward import BuriedObject, simulate_background, simulate_object
 from clearfast_gis.thermal.materials import MATERIALS
 from clearfast_gis.thermal.soils import soil_of_type
-from clearfast_gis.units import STEFAN_BOLTZMANN
 
 #: thermal material of each object kind's body
 OBJECT_MATERIAL = {"at_mine": "tnt", "ap_mine": "tnt", "stone": "stone", "metal": "steel"}
@@ -61,22 +57,6 @@ class Ground:
 def ground_of(soil_type: str | None, moisture: float, vegetation_cover: float) -> Ground:
     """The :class:`Ground` of a config's ``soil_type``, ``soil_moisture``, ``vegetation_cover``."""
     return Ground(soils(soil_type, moisture), float(vegetation_cover))
-
-
-def under_canopy(forcing: Forcing, cover: float) -> Forcing:
-    """The weather the soil sees under a grass canopy of cover fraction ``cover``.
-
-    The canopy intercepts that share of the sun and replaces that share of the sky by its own
-    long-wave emission, taken at air temperature (a leaf is within a few kelvin of the air);
-    wind and rain reach the soil unchanged.
-    """
-    if cover <= 0.0:
-        return forcing
-    f = float(cover)
-    air = forcing.air_temp_k
-    sky = (1.0 - f) * forcing.sky_lw_wm2 + f * LEAF_EMISSIVITY * STEFAN_BOLTZMANN * air**4
-    return Forcing(forcing.time_s, (1.0 - f) * forcing.solar_wm2, sky, air, forcing.wind_ms,
-                   forcing.rh_pct, forcing.rain_mm_h)
 
 
 def soils(soil_type: str | None = None, moisture: float = 0.5) -> dict:
@@ -218,7 +198,7 @@ def surface_temperature_k(fields: SceneFields, truth: ThermalTruth, s: int) -> n
     sigma = LATERAL_SIGMA_M / fields.grid.pixel_size
     t = cv2.GaussianBlur(t, (0, 0), sigmaX=sigma, borderType=cv2.BORDER_REPLICATE)
     flat = t.reshape(-1)
-    seen = np.float32(1.0 - truth.canopy)
+    seen = np.float32(seen_share(truth.canopy))
     for fp in fields.footprints:
         prof = truth.objects[object_key(fp.obj)]
         flat[fp.index] += seen * np.interp(fp.r_m, prof.radii_m,

@@ -21,10 +21,10 @@ from __future__ import annotations
 
 import numpy as np
 
+from clearfast_gis.thermal.canopy import LEAF_EMISSIVITY
 from clearfast_gis.units import STEFAN_BOLTZMANN as SIGMA
 
 LEAF_SOLAR_ABSORPTANCE = 0.5
-LEAF_EMISSIVITY = 0.97
 LEAF_LATENT_FRACTION = 0.35
 PLATE_CONTACT_WM2K = 15.0
 

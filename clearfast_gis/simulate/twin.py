@@ -310,7 +310,9 @@ class Twin:
             "format": "clearfast-survey", "format_version": 1, "survey_id": survey_id,
             "description": description,
             "site": {"name": c.site_name, "latitude_deg": c.latitude_deg,
-                     "longitude_deg": c.longitude_deg, "ground_altitude_m": c.ground_altitude_m},
+                     "longitude_deg": c.longitude_deg, "ground_altitude_m": c.ground_altitude_m}
+            | ({"vegetation_cover": round(c.vegetation_cover, 1)} if c.vegetation_cover > 0
+               else {}),
             "crs": {"epsg": c.epsg},
             "time": {"start_utc": format_utc(self.start_s, "seconds"),
                      "end_utc": format_utc(self.end_s, "seconds")},

@@ -17,6 +17,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from clearfast_gis.detection.clutter import THRESHOLD_SNR
+from clearfast_gis.thermal.canopy import seen_share, under_canopy
 from clearfast_gis.thermal.forcing import Forcing
 from clearfast_gis.thermal.forward import BuriedObject, ObjectModel
 from clearfast_gis.thermal.materials import MATERIALS, Soil
@@ -127,8 +128,8 @@ def clear_sky_index(forcing: Forcing, lat_deg: float, lon_deg: float) -> float:
 def day_contrast(forcing: Forcing, soil: Soil, scan_time_s: np.ndarray, noise_k: float,
                  lat_deg: float, lon_deg: float,
                  depths_m: tuple[float, ...] = REFERENCE_DEPTHS_M,
-                 show_snr: float = SHOW_SNR, show_share: float = SHOW_SCAN_SHARE
-                 ) -> DayContrast:
+                 show_snr: float = SHOW_SNR, show_share: float = SHOW_SCAN_SHARE,
+                 canopy: float = 0.0) -> DayContrast:
     """The reference mine's peak contrast at ``depths_m`` over the scans (see the module).
 
     Parameters
@@ -145,12 +146,16 @@ def day_contrast(forcing: Forcing, soil: Soil, scan_time_s: np.ndarray, noise_k:
         Site.
     show_snr, show_share : float
         The detector's cut in noise sigmas and its voting share of the scans.
+    canopy : float
+        Grass cover recorded for the site, 0-1: the mine lies under it
+        (:mod:`clearfast_gis.thermal.canopy`); its contrast is seen times ``1 - canopy``.
     """
-    model = ObjectModel(soil, forcing, scan_time_s, REFERENCE_RADIUS_M)
+    model = ObjectModel(soil, under_canopy(forcing, canopy), scan_time_s, REFERENCE_RADIUS_M)
+    seen = seen_share(canopy)
     peaks, shares, curves = [], [], []
     for d in depths_m:
         obj = BuriedObject(REFERENCE_RADIUS_M, REFERENCE_HEIGHT_M, d, MATERIALS["tnt"])
-        curves.append(model.surface_at(obj, [0.0])[:, 0] - model.background_k)
+        curves.append(seen * (model.surface_at(obj, [0.0])[:, 0] - model.background_k))
         c = np.abs(curves[-1])
         peaks.append(float(np.max(c)))
         shares.append(float(np.mean(DELIVERED_FRACTION * c >= show_snr * noise_k)))

@@ -86,7 +86,8 @@ GAIN_TERM = math.sqrt(sum(v * v for v in GAIN_TERMS.values()))
 """The gain terms in quadrature."""
 
 
-def curve_term_shifts(jacobian: np.ndarray, model_k: np.ndarray) -> np.ndarray:
+def curve_term_shifts(jacobian: np.ndarray, model_k: np.ndarray,
+                      extra_gain: float = 0.0) -> np.ndarray:
     """1-sigma shifts of (depth m, log10 alpha) from the curve terms, through the fit.
 
     Parameters
@@ -104,7 +105,8 @@ def curve_term_shifts(jacobian: np.ndarray, model_k: np.ndarray) -> np.ndarray:
         the Jacobian is singular (the fit cannot tell the two apart).
     """
     j = np.asarray(jacobian, dtype=float)
-    curves = np.stack([GAIN_TERM * np.asarray(model_k, dtype=float),
+    gain = math.hypot(GAIN_TERM, extra_gain)
+    curves = np.stack([gain * np.asarray(model_k, dtype=float),
                        np.full(j.shape[0], OFFSET_TERM_K)], axis=1)
     jtj = j.T @ j
     if not np.all(np.isfinite(jtj)) or np.linalg.cond(jtj) > 1e12:
@@ -112,13 +114,15 @@ def curve_term_shifts(jacobian: np.ndarray, model_k: np.ndarray) -> np.ndarray:
     return np.linalg.solve(jtj, j.T @ curves).T
 
 
-def chain_sigmas(inv: Inversion) -> tuple[float, float]:
+def chain_sigmas(inv: Inversion, extra_gain: float = 0.0) -> tuple[float, float]:
     """The chain's 1-sigma (depth m, log10 alpha) error of ``inv``: every term of the module
-    notes in quadrature, the curve terms through ``inv``'s own Jacobian."""
+    notes in quadrature, the curve terms through ``inv``'s own Jacobian; ``extra_gain``: a
+    further relative gain error of the curve (a canopy's seen share,
+    :func:`clearfast_gis.thermal.canopy.cover_gain_sigma`)."""
     sd2 = sum(v * v for v in DEPTH_TERMS_M.values()) + (DEPTH_RELATIVE * max(inv.depth_m, 0)) ** 2
     sa2 = sum(v * v for v in LOG10_ALPHA_TERMS.values())
     if inv.jacobian is not None:
-        shifts = curve_term_shifts(inv.jacobian, inv.model_contrast_k)
+        shifts = curve_term_shifts(inv.jacobian, inv.model_contrast_k, extra_gain)
         sd2 += float(np.sum(shifts[:, 0] ** 2))
         sa2 += float(np.sum(shifts[:, 1] ** 2))
     return math.sqrt(sd2), math.sqrt(sa2)
@@ -129,14 +133,15 @@ MAX_REPORTED_DEPTH_SIGMA_M = float(DEFAULT_DEPTHS_M[-1])
 claim metres, which says no more than that the depth is undetermined."""
 
 
-def with_chain_errors(inv: Inversion) -> Inversion:
-    """``inv`` with the chain's error terms (:func:`chain_sigmas`) added in quadrature to its
-    fit sigmas (the depth sigma capped at :data:`MAX_REPORTED_DEPTH_SIGMA_M`).
+def with_chain_errors(inv: Inversion, extra_gain: float = 0.0) -> Inversion:
+    """``inv`` with the chain's error terms (:func:`chain_sigmas`, ``extra_gain`` among the
+    gain terms) added in quadrature to its fit sigmas (the depth sigma capped at
+    :data:`MAX_REPORTED_DEPTH_SIGMA_M`).
 
     An estimate that was ``ok`` becomes ``not_characterised`` when the total depth sigma
     exceeds :data:`~clearfast_gis.thermal.inversion.MAX_DEPTH_SIGMA_M`.
     """
-    chain_d, chain_la = chain_sigmas(inv)
+    chain_d, chain_la = chain_sigmas(inv, extra_gain)
     sd = math.hypot(inv.depth_sigma_m, chain_d)
     sd = min(sd, MAX_REPORTED_DEPTH_SIGMA_M) if math.isfinite(sd) else MAX_REPORTED_DEPTH_SIGMA_M
     sla = math.hypot(inv.log10_alpha_sigma, chain_la)

@@ -71,7 +71,8 @@ class Soil(Material):
     water : SurfaceWater or None
         Water of the surface layer: with it the surface evaporates, takes dew and rain
         (latent heat, :mod:`clearfast_gis.thermal.moisture`); None: a dry surface without
-        latent heat (the inversion's model).
+        latent heat (the default twin's sand; the inversion's soil has the wetness fitted to
+        its shallowest thermocouple, :func:`clearfast_gis.thermal.surface_fit.fit_surface_balance`).
     """
 
     hc_scale: float = 1.0

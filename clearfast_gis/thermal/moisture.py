@@ -49,6 +49,11 @@ DEARDORFF_C1 = 0.5
 DEARDORFF_C2 = 0.9
 DEARDORFF_D1_M = 0.1
 DEARDORFF_TAU_S = 86400.0
+#: The inversion's surface layer when the soil's texture is not known: field capacity and
+#: saturation, m3 m-3 (between the soil types' 0.05-0.36 and 0.30-0.50, ``thermal/soils.py``).
+#: The wetness factor depends on ``theta / theta_fc`` only; these set the drying rate.
+GENERIC_FIELD_CAPACITY = 0.2
+GENERIC_SATURATION = 0.45
 
 
 def saturation_vapour_pressure_hpa(t_k: ArrayLike) -> np.ndarray:
@@ -142,3 +147,13 @@ class SurfaceWater:
         return np.array([self.theta_fc, self.theta_sat, self.theta_deep,
                          DEARDORFF_C1 / (WATER_DENSITY_KGM3 * DEARDORFF_D1_M),
                          DEARDORFF_C2 / DEARDORFF_TAU_S])
+
+
+def surface_water_of_wetness(wetness: float) -> SurfaceWater:
+    """The inversion's surface layer (:data:`GENERIC_FIELD_CAPACITY`,
+    :data:`GENERIC_SATURATION`) at relative wetness ``wetness`` = theta / theta_fc (0 dry,
+    1 at field capacity and above: evaporation at the potential rate), clipped to saturation.
+    """
+    theta = min(max(float(wetness), 0.0) * GENERIC_FIELD_CAPACITY, GENERIC_SATURATION)
+    return SurfaceWater(theta_deep=theta, theta_fc=GENERIC_FIELD_CAPACITY,
+                        theta_sat=GENERIC_SATURATION)

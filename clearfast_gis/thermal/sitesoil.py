@@ -1,5 +1,5 @@
-"""The site's soil for the inversion (diffusivity from the thermocouples, heat capacity from
-the sand end-members, surface terms from the shallowest thermocouple) and the
+"""The site's soil for the inversion (diffusivity from the thermocouples; albedo, convective
+scale, surface wetness and heat capacity from the shallowest thermocouple) and the
 characterisation of each anomaly with the thermal model on it.
 
 Why the shallowest thermocouple and not the mosaics' background: the mosaics hold *apparent*
@@ -21,13 +21,14 @@ import numpy as np
 
 from clearfast_gis.detection.features import AnomalyFeatures
 from clearfast_gis.progress import NULL_PROGRESS, Progress
+from clearfast_gis.thermal.canopy import cover_gain_sigma, seen_share, under_canopy
 from clearfast_gis.thermal.error_budget import with_chain_errors
 from clearfast_gis.thermal.forcing import Forcing
 from clearfast_gis.thermal.inversion import Inversion, invert_anomaly
 from clearfast_gis.thermal.materials import MATERIALS, Soil, get_soil
 from clearfast_gis.thermal.soilfit import fit_soil_diffusivity, soil_log_field
-from clearfast_gis.thermal.surface_fit import fit_surface_parameters
-from clearfast_gis.thermal.table import build_site_table
+from clearfast_gis.thermal.surface_fit import fit_surface_balance, fit_surface_parameters
+from clearfast_gis.thermal.table import SiteTable, build_site_table
 from clearfast_gis.units import ZERO_CELSIUS_K
 
 SURFACE_SENSOR_MAX_DEPTH_M = 0.05
@@ -60,10 +61,13 @@ def soil_from_diffusivity(alpha_m2s: float) -> Soil:
     return dataclasses.replace(base, k_wmk=alpha_m2s * rho_c, rho_c_jm3k=rho_c)
 
 
-def site_soil(soil_log, forcing: Forcing, times_s: np.ndarray, background_c: np.ndarray
-              ) -> tuple[Soil, float, float]:
-    """The site's soil: diffusivity from the thermocouples, surface terms from the shallowest
-    thermocouple (<= 5 cm), else from the background's apparent temperature.
+def site_soil(soil_log, forcing: Forcing, times_s: np.ndarray, background_c: np.ndarray,
+              canopy: float = 0.0) -> tuple[Soil, float, float]:
+    """The site's soil: diffusivity from the thermocouples; albedo, convective scale, surface
+    wetness and heat capacity from the shallowest thermocouple (<= 5 cm,
+    :func:`~clearfast_gis.thermal.surface_fit.fit_surface_balance`); without one, albedo and
+    convective scale from the background's apparent temperature (a dry surface, the sand
+    end-members' heat capacity).
 
     Parameters
     ----------
@@ -74,6 +78,9 @@ def site_soil(soil_log, forcing: Forcing, times_s: np.ndarray, background_c: np.
         Scan times, UTC epoch seconds.
     background_c : float (N,)
         Median apparent temperature of the background per scan, degrees C (the fallback).
+    canopy : float
+        Grass cover recorded for the site, 0-1: the soil is fitted under it
+        (:func:`clearfast_gis.thermal.canopy.under_canopy`).
 
     Returns
     -------
@@ -83,6 +90,7 @@ def site_soil(soil_log, forcing: Forcing, times_s: np.ndarray, background_c: np.
     """
     alpha, sigma = fit_soil_diffusivity(soil_log)
     soil = soil_from_diffusivity(alpha)
+    forcing = under_canopy(forcing, canopy)
     depths = soil_log_field(soil_log, "depth_m")
     shallow = int(np.argmin(depths))
     if depths[shallow] <= SURFACE_SENSOR_MAX_DEPTH_M:
@@ -92,9 +100,8 @@ def site_soil(soil_log, forcing: Forcing, times_s: np.ndarray, background_c: np.
         if sel.size >= 4:
             sel = sel[np.unique(np.linspace(0, sel.size - 1, MAX_SURFACE_SAMPLES).round()
                                 .astype(int))]
-            soil, _ = fit_surface_parameters(soil, forcing, t[sel],
-                                             temp[sel] + ZERO_CELSIUS_K,
-                                             depth_m=float(depths[shallow]))
+            soil, _ = fit_surface_balance(soil, forcing, t[sel], temp[sel] + ZERO_CELSIUS_K,
+                                          depth_m=float(depths[shallow]))
             return soil, alpha, sigma
     ok = np.isfinite(background_c)
     if ok.sum() >= 4:
@@ -118,8 +125,22 @@ def radius_nodes(radii_m: np.ndarray, max_nodes: int = 3) -> np.ndarray:
     return q
 
 
+def chain_site_table(soil_forcing: Forcing, soil: Soil, radius_m, times_s: np.ndarray,
+                     canopy: float = 0.0) -> SiteTable:
+    """The chain's site table: disc means (:data:`CHAIN_TABLE_CENTRE`) of objects in ``soil``
+    under ``soil_forcing`` (the weather under the site's canopy,
+    :func:`clearfast_gis.thermal.canopy.under_canopy`), their contrast as seen through a
+    canopy of cover ``canopy`` (times ``1 - canopy``). ``radius_m`` float or (Q,) m;
+    ``times_s`` (N,) UTC epoch s."""
+    table = build_site_table(soil_forcing, soil, radius_m, times_s, centre=CHAIN_TABLE_CENTRE)
+    if canopy > 0:
+        table = dataclasses.replace(table, contrast_k=seen_share(canopy) * table.contrast_k)
+    return table
+
+
 def characterise(features: list[AnomalyFeatures], times_s: np.ndarray, forcing: Forcing,
-                 soil, progress: Progress = NULL_PROGRESS) -> dict[int, Inversion]:
+                 soil, progress: Progress = NULL_PROGRESS, canopy: float = 0.0
+                 ) -> dict[int, Inversion]:
     """Depth and diffusivity of each anomaly with the thermal model (one site table).
 
     Parameters
@@ -131,6 +152,10 @@ def characterise(features: list[AnomalyFeatures], times_s: np.ndarray, forcing: 
     forcing : Forcing
     soil : Soil
         The site's fitted soil.
+    canopy : float
+        Grass cover recorded for the site, 0-1: the objects lie under it and their contrast
+        is seen times ``1 - canopy`` (:mod:`clearfast_gis.thermal.canopy`), a gain uncertain
+        by :func:`~clearfast_gis.thermal.canopy.cover_gain_sigma` (in the sigmas).
 
     Returns
     -------
@@ -145,8 +170,9 @@ def characterise(features: list[AnomalyFeatures], times_s: np.ndarray, forcing: 
     radii = np.array([0.5 * f.diameter_m for f in features])
     nodes = radius_nodes(radii)
     progress.message(f"thermal model table for radii {', '.join(f'{r:.2f}' for r in nodes)} m")
-    table = build_site_table(forcing, soil, nodes if nodes.size > 1 else float(nodes[0]),
-                             times_s, centre=CHAIN_TABLE_CENTRE)
+    forcing = under_canopy(forcing, canopy)
+    table = chain_site_table(forcing, soil, nodes if nodes.size > 1 else float(nodes[0]),
+                             times_s, canopy)
     out: dict[int, Inversion] = {}
     progress.start("characterise", len(features))
     for f, r in zip(features, radii, strict=True):
@@ -155,7 +181,8 @@ def characterise(features: list[AnomalyFeatures], times_s: np.ndarray, forcing: 
         r_tab = float(np.clip(r, nodes.min(), nodes.max()))
         if (np.isfinite(centre) & np.isfinite(ring)).sum() >= 4:
             out[f.id] = with_chain_errors(invert_anomaly(times_s, centre, ring, forcing, soil,
-                                                         r_tab, table=table))
+                                                         r_tab, table=table),
+                                          cover_gain_sigma(canopy))
         progress.advance()
     progress.close()
     return out
