@@ -4,8 +4,9 @@ kernel (:func:`clearfast_gis.detection._kernels.order_statistics`).
 Each float's bits are mapped to an unsigned key whose integer order is the float order (the
 sign bit set for non-negative values, every bit flipped for negative ones; both zeros get
 +0.0's key, as they compare equal). One pass counts the keys' top :data:`RADIX_BITS` bits; a
-second gathers the keys of the buckets that hold the requested ranks; a bucket is narrowed
-by the next bits while it holds more than :data:`SORT_BELOW` keys, then sorted. Two passes
+second gathers the keys of the buckets that hold the requested ranks (a bucket of nothing but
+zeros, most of a hat image, is its own answer); a bucket of more than :data:`SORT_BELOW` keys
+is narrowed by bucketing its range again, then sorted. Two passes
 over the data and no copy of it, against ``np.partition``'s copy and introselect.
 """
 
@@ -35,30 +36,38 @@ def _key(bits, sign, ones):  # pragma: no cover - compiled
 
 
 @numba.njit(cache=True, nogil=True)
-def _narrow(keys, rank, shift):  # pragma: no cover - compiled
-    """The key of ``rank`` (0-based, sorted order) among ``keys``, which share every bit
-    above ``shift``."""
-    while keys.size > SORT_BELOW and shift > 0:
-        shift = max(shift - RADIX_BITS, 0)
+def _narrow(keys, rank):  # pragma: no cover - compiled
+    """The key of ``rank`` (0-based, sorted order) among ``keys``."""
+    while keys.size > SORT_BELOW:
+        lo = keys[0]
+        hi = keys[0]
+        for k in keys:
+            lo = min(lo, k)
+            hi = max(hi, k)
+        if lo == hi:  # e.g. the zeros of a hat image
+            return lo
+        # buckets of (k - lo) >> shift: the range spread over at most 2**16 buckets, of which
+        # lo and hi fall in different ones, so every pass narrows
+        shift = 0
+        while (hi - lo) >> np.uint64(shift + RADIX_BITS):
+            shift += 1
         hist = np.zeros(_BUCKETS, dtype=np.int64)
         for k in keys:
-            hist[(k >> np.uint64(shift)) & np.uint64(_BUCKETS - 1)] += 1
+            hist[((k - lo) >> np.uint64(shift))] += 1
         below = 0
         t = 0
         while below + hist[t] <= rank:
             below += hist[t]
             t += 1
         part = np.empty(hist[t], dtype=np.uint64)
-        m = 0
         want = np.uint64(t)
+        m = 0
         for k in keys:
-            if (k >> np.uint64(shift)) & np.uint64(_BUCKETS - 1) == want:
+            if (k - lo) >> np.uint64(shift) == want:
                 part[m] = k
                 m += 1
         keys = part
         rank -= below
-    if shift == 0:  # every key of the bucket is the same
-        return keys[rank]
     return np.sort(keys)[rank]
 
 
@@ -83,9 +92,16 @@ def select_keys(bits, nbits, ranks):  # pragma: no cover - compiled
     sign = np.uint64(1) << np.uint64(nbits - 1)
     ones = (sign - np.uint64(1)) | sign
     shift = np.uint64(nbits - RADIX_BITS)
-    hist = np.zeros(_BUCKETS, dtype=np.int64)
-    for i in range(bits.size):
-        hist[_key(bits[i], sign, ones) >> shift] += 1
+    # four interleaved counts (no chain of increments of one counter when a bucket holds
+    # most values), and the exact zeros: a hat image is mostly zeros
+    counts = np.zeros((4, _BUCKETS), dtype=np.int64)
+    zeros = 0
+    n = bits.size
+    for i in range(n):
+        k = _key(bits[i], sign, ones)
+        zeros += k == sign
+        counts[i & 3, k >> shift] += 1
+    hist = counts[0] + counts[1] + counts[2] + counts[3]
     nr = ranks.size
     bucket = np.empty(nr, dtype=np.int64)
     base = np.empty(nr, dtype=np.int64)
@@ -97,25 +113,31 @@ def select_keys(bits, nbits, ranks):  # pragma: no cover - compiled
             base[r] = start
             r += 1
         start += hist[t]
-    offset = np.full(_BUCKETS, -1, dtype=np.int64)  # where each wanted bucket's keys go
+    zero_t = np.int64(sign >> shift)
+    only_zeros = hist[zero_t] == zeros
+    offset = np.full(_BUCKETS, -1, dtype=np.int64)  # where each gathered bucket's keys go
     total = 0
     for r in range(nr):
-        if offset[bucket[r]] < 0:
-            offset[bucket[r]] = total
-            total += hist[bucket[r]]
+        t = bucket[r]
+        if offset[t] < 0 and not (t == zero_t and only_zeros):
+            offset[t] = total
+            total += hist[t]
     gathered = np.empty(total, dtype=np.uint64)
     fill = offset.copy()
-    for i in range(bits.size):
-        k = _key(bits[i], sign, ones)
-        o = fill[k >> shift]
-        if o >= 0:
-            gathered[o] = k
-            fill[k >> shift] = o + 1
+    if total > 0:
+        for i in range(n):
+            k = _key(bits[i], sign, ones)
+            o = fill[k >> shift]
+            if o >= 0:
+                gathered[o] = k
+                fill[k >> shift] = o + 1
     out = np.empty(nr, dtype=np.uint64)
     for r in range(nr):
         t = bucket[r]
-        out[r] = _narrow(gathered[offset[t]:offset[t] + hist[t]], ranks[r] - base[r],
-                         nbits - RADIX_BITS)
+        if t == zero_t and only_zeros:
+            out[r] = sign
+        else:
+            out[r] = _narrow(gathered[offset[t]:offset[t] + hist[t]], ranks[r] - base[r])
     return out
 
 

@@ -68,3 +68,16 @@ def test_stretch_limits_same_on_both_kernel_sets():
     with kernels.use("reference"):
         ref = stretch_limits(hat, 0.01)
     assert fast == ref and fast[0] == 0.0 and fast[1] > 0.5
+
+
+@pytest.mark.parametrize("dtype", [np.float32, np.float64])
+def test_zeros_alone_and_beside_subnormals(dtype):
+    """A rank on zeros is answered from the counts alone when the zeros' bucket holds nothing
+    else; subnormals share that bucket, and are then gathered and ordered."""
+    tiny = np.finfo(dtype).smallest_subnormal
+    for extra in ([], [tiny, 3 * tiny, -tiny]):
+        v = np.concatenate([np.zeros(30_000, dtype), np.array(extra, dtype),
+                            np.linspace(-1, 1, 9_999).astype(dtype)])
+        np.random.default_rng(5).shuffle(v)
+        ranks = list(range(0, v.size, 997)) + [v.size - 1]
+        np.testing.assert_array_equal(order_statistics(v, ranks), np.sort(v)[ranks])
