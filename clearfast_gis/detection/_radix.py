@@ -165,6 +165,8 @@ def radix_order_statistics(values: np.ndarray, ranks) -> np.ndarray:
         The values at ``ranks`` (in the order given).
     """
     v = np.ascontiguousarray(values).ravel()
+    if v.dtype not in (np.float32, np.float64):
+        raise TypeError(f"radix selection takes float32 or float64 values, not {v.dtype}")
     unsigned = {4: np.uint32, 8: np.uint64}[v.dtype.itemsize]
     nbits = 8 * v.dtype.itemsize
     r = np.asarray(ranks, dtype=np.int64).ravel()

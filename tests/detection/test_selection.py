@@ -81,3 +81,8 @@ def test_zeros_alone_and_beside_subnormals(dtype):
         np.random.default_rng(5).shuffle(v)
         ranks = list(range(0, v.size, 997)) + [v.size - 1]
         np.testing.assert_array_equal(order_statistics(v, ranks), np.sort(v)[ranks])
+
+
+def test_other_dtypes_are_refused():
+    with pytest.raises(TypeError):
+        order_statistics(np.arange(10, dtype=np.int32), [3])
