@@ -107,6 +107,11 @@ REGISTRY: dict[str, KernelPair] = {
         "clearfast_gis.detection._reference:binary_opening_by_reconstruction",
         "OpenCV disk erosion + binary reconstruction (numba)",
         "scikit-image erosion and `reconstruction` (8-connected)"),
+    "order_statistics": KernelPair(
+        "clearfast_gis.detection._kernels:order_statistics",
+        "clearfast_gis.detection._reference:order_statistics",
+        "radix selection on the values' bits (numba), no copy",
+        "`np.partition`"),
     "register_conformal": KernelPair(
         "clearfast_gis.registration._kernels:register_conformal",
         "clearfast_gis.registration._reference:register_conformal",

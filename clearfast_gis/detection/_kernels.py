@@ -20,6 +20,7 @@ import numba
 import numpy as np
 from scipy import ndimage
 
+from clearfast_gis.detection._radix import radix_order_statistics
 from clearfast_gis.detection.morphology import dilate_disk, erode_disk
 
 
@@ -241,3 +242,10 @@ def binary_opening_by_reconstruction(g: np.ndarray, d2_px: float) -> np.ndarray:
     """:func:`clearfast_gis.detection.morphology.binary_opening_by_reconstruction` on the fast
     kernels (bool ``g``)."""
     return binary_reconstruction(erode_disk(g, d2_px), g)
+
+
+def order_statistics(values: np.ndarray, ranks) -> np.ndarray:
+    """:func:`clearfast_gis.detection.selection.order_statistics` on the fast kernels: radix
+    selection over the values' bits (:mod:`clearfast_gis.detection._radix`), no copy of the
+    values."""
+    return radix_order_statistics(values, ranks)

@@ -63,3 +63,10 @@ def binary_opening_by_reconstruction(binary: np.ndarray, d2_px: float) -> np.nda
     seed = erosion(g.view(np.uint8), disk(disk_radius_px(d2_px)), mode="max")
     return reconstruction(seed, g.view(np.uint8), method="dilation",
                           footprint=np.ones((3, 3), bool)).astype(bool)
+
+
+def order_statistics(values: np.ndarray, ranks) -> np.ndarray:
+    """:func:`clearfast_gis.detection._kernels.order_statistics` with ``np.partition``."""
+    v = np.asarray(values).ravel()
+    r = np.asarray(ranks, dtype=np.int64).ravel()
+    return np.partition(v, r)[r]

@@ -7,6 +7,7 @@ import warnings
 import numpy as np
 from scipy import ndimage
 
+from clearfast_gis.detection.selection import median
 from clearfast_gis.detection.stack import as_scan_stack, map_scans
 
 #: Scale of the local background a contrast is measured against, metres (an AP mine and its
@@ -46,11 +47,11 @@ def image_clutter_k(image: np.ndarray, pixel_size_m: float, keep: np.ndarray | N
         return float("nan")
     size = max(3, int(round(scale_m / pixel_size_m)) | 1)
     img = np.asarray(image, dtype=np.float64)
-    # the medians select in place in temporaries of their own (the same order statistics)
-    filled = np.where(finite, img, np.median(img[finite], overwrite_input=True))
+    # exact medians by selection (np.median's values, without its copies)
+    filled = np.where(finite, img, median(img[finite]))
     v = (filled - ndimage.uniform_filter(filled, size=size, mode="nearest"))[ok]
-    np.abs(np.subtract(v, np.median(v), out=v), out=v)
-    return float(1.4826 * np.median(v, overwrite_input=True))
+    np.abs(np.subtract(v, median(v), out=v), out=v)
+    return float(1.4826 * median(v))
 
 
 def background_levels(stack, labels: np.ndarray, pixel_size_m: float,

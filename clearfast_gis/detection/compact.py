@@ -18,6 +18,7 @@ from scipy import ndimage
 
 from clearfast_gis.detection.morphology import disk_footprint
 from clearfast_gis.detection.multiscale import robust_sigma
+from clearfast_gis.detection.selection import median
 from clearfast_gis.detection.stack import as_scan_stack, map_scans
 
 
@@ -27,7 +28,7 @@ def _compact_term(f: np.ndarray, kernel: np.ndarray) -> tuple[np.ndarray, np.nda
     ok = np.isfinite(f)
     if ok.sum() < 9:
         return None
-    filled = np.where(ok, f, np.median(f[ok])).astype(np.float32)
+    filled = np.where(ok, f, median(f[ok])).astype(np.float32)
     white = filled - cv2.morphologyEx(filled, cv2.MORPH_OPEN, kernel,
                                       borderType=cv2.BORDER_REPLICATE)
     black = cv2.morphologyEx(filled, cv2.MORPH_CLOSE, kernel,

@@ -29,6 +29,7 @@ import numpy as np
 
 from clearfast_gis.detection.detector import detect_anomalies
 from clearfast_gis.detection.features import blob_features
+from clearfast_gis.detection.selection import median
 from clearfast_gis.detection.snapshot import Detection, gaussian_nan, shrink
 
 __all__ = ["MultiScaleParams", "altitude_from_name", "altitude_ladder",
@@ -149,7 +150,7 @@ def robust_sigma(image: np.ndarray) -> float:
     v = v[np.isfinite(v)]
     if v.size == 0:
         return 0.0
-    return float(1.4826 * np.median(np.abs(v - np.median(v))))
+    return float(1.4826 * median(np.abs(v - median(v))))
 
 
 def snapshot_score(contrast: float, sigma: float, circularity: float, area_px: float,

@@ -4,6 +4,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from clearfast_gis.detection.selection import order_statistics
+
 __all__ = ["inverted_cdf_rank", "stretch_limits", "stretch", "stretch_threshold"]
 
 
@@ -35,10 +37,9 @@ def stretch_limits(image: np.ndarray, epsilon: float = 0.01) -> tuple[float, flo
     if values.size == 0:
         return float("nan"), float("nan")
     # select the two ranks (no float64 copy, no full sort)
-    ranks = [inverted_cdf_rank(values.size, epsilon),
-             inverted_cdf_rank(values.size, 1.0 - epsilon)]
-    part = np.partition(values, ranks)
-    return float(part[ranks[0]]), float(part[ranks[1]])
+    lo, hi = order_statistics(values, [inverted_cdf_rank(values.size, epsilon),
+                                       inverted_cdf_rank(values.size, 1.0 - epsilon)])
+    return float(lo), float(hi)
 
 
 def inverted_cdf_rank(n: int, q: float) -> int:

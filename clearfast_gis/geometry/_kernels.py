@@ -18,14 +18,33 @@ from clearfast_gis.geometry.grid import GroundGrid
 from clearfast_gis.geometry.pose import CameraPose
 from clearfast_gis.geometry.projection import NOT_SEEN, frame_footprint
 
+PRETEST_MARGIN = 1e-9
+"""Margin of the equiangular maps' pretest, in cosine and tangent units (the angles' own
+rounding is ~1e-16): a cell is skipped only when it is this far outside the frame's
+angular bounds, so every cell that may be seen gets the exact computation."""
+
 
 @numba.njit(cache=True, nogil=True)
 def _equiangular_maps(xs, ys, z, c, r_att, az0, el0, ifov, width, height,
-                      map_x, map_y):  # pragma: no cover - compiled
+                      map_x, map_y, skip_outside=True):  # pragma: no cover - compiled
     cu = (width - 1) / 2.0
     cv = (height - 1) / 2.0
     dz = z - c[2]
     two_pi = 2.0 * math.pi
+    # pretest without the two arctangents: a cell is outside the frame when its direction
+    # is farther than the half-width cu * ifov from the axis azimuth az0, or its elevation
+    # outside el0 -+ cv * ifov (monotone in bz / rho); cells near the bounds (the margin)
+    # and every cell when a bound reaches the vertical are computed exactly
+    half_w = cu * ifov
+    el_lo = el0 - cv * ifov
+    el_hi = el0 + cv * ifov
+    pretest = skip_outside and half_w < 0.5 * math.pi and -0.5 * math.pi < el_lo \
+        and el_hi < 0.5 * math.pi
+    cos_w = math.cos(half_w) - PRETEST_MARGIN
+    sin_a = math.sin(az0)
+    cos_a = math.cos(az0)
+    tan_lo = math.tan(el_lo) - PRETEST_MARGIN * (1.0 + abs(math.tan(el_lo)))
+    tan_hi = math.tan(el_hi) + PRETEST_MARGIN * (1.0 + abs(math.tan(el_hi)))
     for i in range(ys.size):
         dy = ys[i] - c[1]
         for j in range(xs.size):
@@ -33,9 +52,15 @@ def _equiangular_maps(xs, ys, z, c, r_att, az0, el0, ifov, width, height,
             bx = r_att[0, 0] * dx + r_att[1, 0] * dy + r_att[2, 0] * dz
             by = r_att[0, 1] * dx + r_att[1, 1] * dy + r_att[2, 1] * dz
             bz = r_att[0, 2] * dx + r_att[1, 2] * dy + r_att[2, 2] * dz
+            rho = math.sqrt(bx * bx + by * by)
+            if pretest and rho > 0.0 and (bx * sin_a + by * cos_a < rho * cos_w
+                                          or bz < rho * tan_lo or bz > rho * tan_hi):
+                map_x[i, j] = -1.0
+                map_y[i, j] = -1.0
+                continue
             d_az = math.atan2(bx, by) - az0
             d_az -= two_pi * math.floor((d_az + math.pi) / two_pi)
-            el = math.atan2(bz, math.sqrt(bx * bx + by * by))
+            el = math.atan2(bz, rho)
             u = d_az / ifov + cu
             v = (el0 - el) / ifov + cv
             if dz < 0.0 and 0.0 <= u <= width - 1.0 and 0.0 <= v <= height - 1.0:

@@ -66,13 +66,17 @@ def _fused(raw, gain0, offset0, gain1, offset1, w1, tau, b_air, r0, inv_dr, t_no
     h, w = raw.shape
     n = t_nodes.size - 1
     w0 = 1.0 - w1
+    s_row = np.empty(w, dtype=np.float64)  # table coordinate of each pixel of a row
     for i in range(h):
+        # the arithmetic of a row first (no branch, so the loop vectorises), then the table
         for j in range(w):
             g = w0 * gain0[i, j] + w1 * gain1[i, j]
             o = w0 * offset0[i, j] + w1 * offset1[i, j]
             t = tau[i, j]
             surf = (raw[i, j] * g + o - (1.0 - t) * b_air) / t
-            s = (surf - r0) * inv_dr
+            s_row[j] = (surf - r0) * inv_dr
+        for j in range(w):
+            s = s_row[j]
             if s >= 0.0 and s <= n:  # False for NaN
                 k = min(int(s), n - 1)
                 f = s - k

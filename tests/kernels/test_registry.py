@@ -39,6 +39,14 @@ def _opening():
     return (np.nan_to_num(scene(3)) > 0.2, 5), np.testing.assert_array_equal
 
 
+def _order_statistics():
+    rng = np.random.default_rng(11)
+    values = rng.normal(0.0, 1.0, 50_001).astype(np.float32)
+    values[:20_000] = 0.0  # a hat image: mostly zeros
+    ranks = [0, 500, 25_000, 49_500, 50_000]
+    return (values, ranks), np.testing.assert_array_equal  # the same values, bit for bit
+
+
 def _registration():
     import math
 
@@ -139,6 +147,7 @@ EXAMPLES = {
     "top_hat_by_reconstruction": _hat,
     "bottom_hat_by_reconstruction": _hat,
     "binary_opening_by_reconstruction": _opening,
+    "order_statistics": _order_statistics,
     "register_conformal": _registration,
     "ground_maps": _maps,
     "resample": _resample,
