@@ -201,7 +201,7 @@ def test_count_finite_equals_numpy(diurnal):
     np.testing.assert_array_equal(count_finite(iter(stack)), np.isfinite(stack).sum(axis=0))
 
 
-def test_detector_memory_per_image_is_a_fraction_of_a_byte_per_pixel(diurnal):
+def test_detector_memory_per_image_is_a_fraction_of_a_byte_per_pixel(diurnal, monkeypatch):
     """Beyond its input, the detector keeps the thresholded hats G_i one bit a pixel and the
     per-scan maps L_i (hot, cold): with 4 bands, 2 / 4 + 2 / 8 bytes a pixel per image (the
     boolean stacks of G_i and O_i kept before: 2.5 bytes a pixel per image). Peak measured by
@@ -209,6 +209,9 @@ def test_detector_memory_per_image_is_a_fraction_of_a_byte_per_pixel(diurnal):
     import tracemalloc
 
     stack = diurnal[0]
+    # one thread: scans filtered side by side would each hold the order statistics' fixed
+    # scratch (radix histograms, about 2.5 MB whatever the image) at moments that vary
+    monkeypatch.setenv("CLEARFAST_THREADS", "1")
 
     def peak(n: int) -> int:
         multi = np.repeat(stack[:n, None], 4, axis=1)  # (n, 4, H, W)
