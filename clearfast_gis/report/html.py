@@ -18,7 +18,7 @@ TABLE_COLUMNS = [
     ("priority", "Priority", "{}"), ("p_mine", "p_mine", "{:.2f}"),
     ("anomaly_id", "ID", "{}"), ("x", "X (m)", "{:.2f}"), ("y", "Y (m)", "{:.2f}"),
     ("area_m2", "Area (m²)", "{:.4f}"), ("diameter_m", "Diameter (m)", "{:.3f}"),
-    ("depth_m", "Depth (cm)", "cm"), ("diffusivity_m2s", "Alpha (m²/s)", "{:.2e}"),
+    ("depth_m", "Depth (cm)", "cm"), ("diffusivity_m2s", "Diffusivity (mm²/s)", "mm2s"),
     ("circularity", "Circularity", "{:.3f}"), ("polarity", "Polarity", "{}"),
     ("status", "Status", "{}"), ("class_cue", "Class cue", "{}"),
     ("cue_confidence", "Cue confidence", "{:.2f}"), ("n_scans", "Scans", "{}"),
@@ -90,6 +90,12 @@ def _cell(rec: dict, key: str, fmt: str) -> str:
         if isinstance(s, float) and math.isfinite(s):
             txt += f" ± {100 * s:.1f}"
         return txt
+    if fmt == "mm2s":  # m²/s shown in mm²/s, two significant digits, as the QGIS form does
+        s = rec.get("diffusivity_sigma_m2s")
+        txt = f"{1e6 * v:#.2g}".rstrip(".")
+        if isinstance(s, float) and math.isfinite(s):
+            txt += f" ± {1e6 * s:#.2g}".rstrip(".")
+        return txt
     return html.escape(fmt.format(v))
 
 
@@ -132,6 +138,7 @@ def render_html(data: ReportData) -> str:
 body {{ font-family: sans-serif; margin: 2em; max-width: 1400px; }}
 table {{ border-collapse: collapse; font-size: 0.85em; }}
 th, td {{ border: 1px solid #bbb; padding: 3px 6px; text-align: right; }}
+td {{ white-space: nowrap; }}
 th {{ background: #eee; }}
 figure {{ display: inline-block; margin: 0.5em; }}
 .note {{ background: #fff4e0; border-left: 4px solid #e67e22; padding: 0.5em 1em; }}

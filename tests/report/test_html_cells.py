@@ -1,0 +1,38 @@
+"""The suspects table of report.html: values in the units a planner reads."""
+
+from __future__ import annotations
+
+import math
+
+import pytest
+
+from clearfast_gis.report.html import TABLE_COLUMNS, _cell
+
+
+def _fmt(key: str) -> str:
+    return next(f for k, _, f in TABLE_COLUMNS if k == key)
+
+
+@pytest.mark.parametrize(("alpha", "sigma", "text"), [
+    (1.47e-7, 3.1e-8, "0.15 ± 0.031"),
+    (1.0e-7, 1.0e-8, "0.10 ± 0.010"),
+    (1.23e-5, 4.0e-6, "12 ± 4.0"),
+    (9.8e-8, math.nan, "0.098"),
+    (3.16e-8, None, "0.032"),
+])
+def test_diffusivity_in_mm2_per_s_with_two_significant_digits(alpha, sigma, text):
+    rec = {"diffusivity_m2s": alpha, "diffusivity_sigma_m2s": sigma}
+    assert _cell(rec, "diffusivity_m2s", _fmt("diffusivity_m2s")) == text
+
+
+def test_depth_in_cm_with_its_sigma_and_missing_values_as_a_dash():
+    assert _cell({"depth_m": 0.0234, "depth_sigma_m": 0.0071}, "depth_m", _fmt("depth_m")) \
+        == "2.3 ± 0.7"
+    assert _cell({"depth_m": math.nan}, "depth_m", _fmt("depth_m")) == "–"
+    assert _cell({}, "diffusivity_m2s", _fmt("diffusivity_m2s")) == "–"
+
+
+def test_column_headers_name_their_units():
+    heads = {k: t for k, t, _ in TABLE_COLUMNS}
+    assert heads["diffusivity_m2s"] == "Diffusivity (mm²/s)"
+    assert heads["depth_m"] == "Depth (cm)"
