@@ -16,6 +16,7 @@ measured temperature of undisturbed soil:
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import replace
 
 import numpy as np
@@ -77,6 +78,23 @@ def _albedo_hc_start(soil: Soil) -> list[float]:
                           np.log(HC_SCALE_BOUNDS[1] - 0.1)))]
 
 
+def _best_fit(model: Callable[[np.ndarray], Soil], starts: list[list[float]], bounds,
+              forcing: Forcing, t: np.ndarray, obs: np.ndarray, depth_m: float,
+              bottom: Bottom, dt_s: float) -> tuple[Soil, float]:
+    """The least-squares fit of ``model``'s parameters to ``obs`` (K at ``depth_m``, times
+    ``t``) from each start in turn; the least costly one, with its rms misfit (K)."""
+
+    def resid(p: np.ndarray) -> np.ndarray:
+        return _model_temperature(model(p), forcing, t, depth_m, bottom, dt_s) - obs
+
+    best = None
+    for start in starts:
+        sol = least_squares(resid, start, bounds=bounds, diff_step=1e-3)
+        if best is None or sol.cost < best.cost:
+            best = sol
+    return model(best.x), float(np.sqrt(np.mean(best.fun**2)))
+
+
 def fit_surface_parameters(
     soil: Soil,
     forcing: Forcing,
@@ -120,13 +138,10 @@ def fit_surface_parameters(
     def model(p: np.ndarray) -> Soil:
         return replace(soil, albedo=float(p[0]), hc_scale=float(np.exp(p[1])))
 
-    def resid(p: np.ndarray) -> np.ndarray:
-        return _model_temperature(model(p), forcing, t, depth_m, bottom, dt_s) - obs
-
     bounds = ([ALBEDO_BOUNDS[0], np.log(HC_SCALE_BOUNDS[0])],
               [ALBEDO_BOUNDS[1], np.log(HC_SCALE_BOUNDS[1])])
-    sol = least_squares(resid, _albedo_hc_start(soil), bounds=bounds, diff_step=1e-3)
-    return model(sol.x), float(np.sqrt(np.mean(sol.fun**2)))
+    return _best_fit(model, [_albedo_hc_start(soil)], bounds, forcing, t, obs, depth_m,
+                     bottom, dt_s)
 
 
 def fit_surface_balance(
@@ -190,22 +205,14 @@ def fit_surface_balance(
                        water=surface_water_of_wetness(float(p[2])), rho_c_jm3k=rho_c,
                        k_wmk=alpha * rho_c)
 
-    def resid(p: np.ndarray) -> np.ndarray:
-        return _model_temperature(model(p), forcing, t, depth_m, bottom, dt_s) - obs
-
     lo = [ALBEDO_BOUNDS[0], np.log(HC_SCALE_BOUNDS[0]), WETNESS_BOUNDS[0],
           HEAT_CAPACITY_BOUNDS_JM3K[0] / 1e6]
     hi = [ALBEDO_BOUNDS[1], np.log(HC_SCALE_BOUNDS[1]), WETNESS_BOUNDS[1],
           HEAT_CAPACITY_BOUNDS_JM3K[1] / 1e6]
     rho_c0 = float(np.clip(soil.rho_c_jm3k / 1e6, lo[3] + 0.01, hi[3] - 0.01))
-    best = None
-    for w0 in WETNESS_STARTS:
-        sol = least_squares(resid, [*_albedo_hc_start(soil), w0, rho_c0], bounds=(lo, hi),
-                            diff_step=1e-3)
-        if best is None or sol.cost < best.cost:
-            best = sol
-    rms_wet = float(np.sqrt(np.mean(best.fun**2)))
+    starts = [[*_albedo_hc_start(soil), w0, rho_c0] for w0 in WETNESS_STARTS]
+    wet, rms_wet = _best_fit(model, starts, (lo, hi), forcing, t, obs, depth_m, bottom, dt_s)
     dry, rms_dry = fit_surface_parameters(soil, forcing, t, obs, bottom, dt_s, depth_m)
     if rms_wet > WET_RMS_RATIO * rms_dry:
         return dry, rms_dry
-    return model(best.x), float(np.sqrt(np.mean(best.fun**2)))
+    return wet, rms_wet
