@@ -14,7 +14,7 @@ mean over the object's disc (``build_site_table(centre=...)``).
     python benchmarks/depth_bias.py SURVEY PRODUCTS [--quick]
     python benchmarks/depth_bias.py SURVEY PRODUCTS --footprint [--also SURVEY PRODUCTS ...]
         [--band 2]
-    python benchmarks/depth_bias.py SURVEY PRODUCTS --ideal
+    python benchmarks/depth_bias.py SURVEY PRODUCTS --ideal [--scans 48]
 
 ``--ideal``: the forward model's own AP mine under the survey's weather and scans (depths
 :data:`IDEAL_DEPTHS_M`), depth (diffusivity / truth) as the chain would invert it and with the
@@ -161,18 +161,21 @@ IDEAL_DEPTHS_M = (0.0, 0.01, 0.02, 0.03, 0.05, 0.07)
 """Depths of the ``--ideal`` AP mine, m."""
 
 
-def ideal_case(survey) -> None:
+def ideal_case(survey, n_scans: int = 0) -> None:
     """Print the ``--ideal`` table: an AP mine (M2A4, TNT) in the twin's site soil under the
     survey's logged weather, at its scan times, its exact radial profile from the forward
     model (no sensor, no mosaic), measured as the chain measures it (half-maximum footprint of
     the RMS contrast, minus the ring at 1.5-2.5 footprint radii or not) and inverted with the
-    chain's soil (fitted to the survey's thermocouple)."""
+    chain's soil (fitted to the survey's thermocouple). ``n_scans`` > 0: that many scans
+    evenly over the survey's period instead of its own."""
     from clearfast_gis.minetypes import MINE_TYPES
     from clearfast_gis.simulate.surface import soils
     from clearfast_gis.thermal.forward import BuriedObject, simulate_object
     from clearfast_gis.thermal.materials import MATERIALS
 
     scans, times, forcing, log = survey_inputs(survey)
+    if n_scans > 0:
+        times = np.linspace(times.min(), times.max(), n_scans)
     soil, _, _ = site_soil(log, forcing, times, np.full(times.size, np.nan))
     ap, tnt = MINE_TYPES[0], MATERIALS["tnt"]
     radii = np.linspace(0.0, 0.3, 601)
@@ -240,9 +243,11 @@ def main() -> None:
                     metavar=("SURVEY", "PRODUCTS"), help="more surveys, pooled (--footprint)")
     ap.add_argument("--ideal", action="store_true",
                     help="the forward model's own AP mine, measured as the chain measures it")
+    ap.add_argument("--scans", type=int, default=0,
+                    help="--ideal: this many scans evenly over the survey's period")
     args = ap.parse_args()
     if args.ideal:
-        ideal_case(args.survey)
+        ideal_case(args.survey, args.scans)
         return
     if args.footprint:
         footprint_table([row for survey, products in [(args.survey, args.products)]
