@@ -44,12 +44,15 @@ from importlib import resources
 
 import numpy as np
 
+from clearfast_gis.minetypes import MINE_TYPES
+
 FEATURES = ("strength", "size_misfit", "circularity", "diurnal", "cool_by_day",
             "characterised", "curve_match")
 """Model features, in the order of the coefficients."""
 
-MINE_TYPE_DIAMETERS_M = {"AP M2A4": 0.104, "AT M6A2": 0.337}
-"""Diameters of the mine types expected on the surveys, m."""
+MINE_TYPE_DIAMETERS_M = {t.name: t.diameter_m for t in MINE_TYPES}
+"""Diameters of the mine types expected on the surveys
+(:data:`~clearfast_gis.minetypes.MINE_TYPES`), m."""
 
 PARAMETERS = "likelihood.json"
 """The fitted model's file in ``clearfast_gis/data``."""

@@ -119,6 +119,10 @@ def invert_anomaly(
     noise_k: float | None = None,
     table: SiteTable | None = None,
     height_m: float = DEFAULT_HEIGHT_M,
+    over_m: float | None = None,
+    ring_m: tuple[float, float] | None = None,
+    blur_m: float = 0.0,
+    gain: ArrayLike | None = None,
 ) -> Inversion:
     """Estimate burial depth and diffusivity of one anomaly.
 
@@ -134,7 +138,8 @@ def invert_anomaly(
     soil : Soil
         Site soil (fitted diffusivity and surface parameters).
     radius_m : float
-        Object radius from the anomaly's footprint, m.
+        Object radius, m: the mine type's the chain takes the anomaly for, or the
+        footprint's.
     noise_k : float, optional
         1-sigma noise of the contrast ``centre - background`` per scan, K; default: the fit's
         residual rms.
@@ -143,6 +148,19 @@ def invert_anomaly(
         (seconds per call, so build it once per site for many anomalies).
     height_m : float
         Object height when the table is built here, m.
+    over_m : float, optional
+        Radius of the disc the centre was averaged over, m, when it is not the object's
+        (the anomaly's half-maximum footprint; needs a "disc" table,
+        :meth:`SiteTable.contrast_for`).
+    ring_m : (float, float), optional
+        Inner and outer radius of the ring ``background_k`` was averaged over, m: the
+        model's contrast is then taken against that ring, in the object's thermal halo,
+        instead of the undisturbed surface ("disc" table).
+    blur_m : float
+        Gaussian sigma of the images' blur the curve was measured through, m ("disc" table).
+    gain : array_like, shape (S,), optional
+        Per-scan factor from the model's kinetic contrast to the measured one (the apparent
+        contrast, :func:`clearfast_gis.thermal.apparent.apparent_gain`); 1 when omitted.
 
     Returns
     -------
@@ -159,10 +177,15 @@ def invert_anomaly(
     ok = np.isfinite(t) & np.isfinite(c) & np.isfinite(b)
     if ok.sum() < 4:
         raise InvalidInput("fewer than 4 valid scans", field="centre_k")
-    t, obs = t[ok], c[ok] - b[ok]
+    g = np.ones(t.shape) if gain is None else np.asarray(gain, dtype=float)
+    if g.shape != t.shape:
+        raise InvalidInput("gain must have one value per scan", field="gain")
+    t, obs, g = t[ok], c[ok] - b[ok], g[ok]
     if table is None:
-        table = build_site_table(forcing, soil, radius_m, t, height_m=height_m)
-    grid = table.contrast_for(radius_m, t)
+        table = build_site_table(forcing, soil, radius_m, t, height_m=height_m,
+                                 centre="axis" if over_m is None and ring_m is None
+                                 and not blur_m > 0 else "disc")
+    grid = table.contrast_for(radius_m, t, over_m, ring_m, blur_m) * g
     depths, la = table.depths_m, table.log10_alpha
     spline = contrast_spline(depths, la, grid)
     lo, hi = np.array([depths[0], la[0]]), np.array([depths[-1], la[-1]])

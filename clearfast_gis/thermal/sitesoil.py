@@ -134,7 +134,9 @@ def chain_site_table(soil_forcing: Forcing, soil: Soil, radius_m, times_s: np.nd
     ``times_s`` (N,) UTC epoch s."""
     table = build_site_table(soil_forcing, soil, radius_m, times_s, centre=CHAIN_TABLE_CENTRE)
     if canopy > 0:
-        table = dataclasses.replace(table, contrast_k=seen_share(canopy) * table.contrast_k)
+        seen = seen_share(canopy)
+        table = dataclasses.replace(table, contrast_k=seen * table.contrast_k,
+                                    over_k=seen * table.over_k)
     return table
 
 
