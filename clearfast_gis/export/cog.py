@@ -242,8 +242,8 @@ class CogStack:
     With a ``decoded`` folder, a scan's COG is decoded once, at its first read by any stack
     of the run, and its bands are kept there as raw float32 (4 B H W bytes a scan, 21 MB on
     the trial's grid); later reads copy them back (about a tenth of the cost of decoding the
-    tiles' DEFLATE again: the footprint, the detector and the stages after it pass over the
-    scans eight times). The values are the COG's, bit for bit.
+    tiles' DEFLATE again: the residuals, the detector and the stages after it pass over the
+    scans up to seven times). The values are the COG's, bit for bit.
 
     Attributes
     ----------
