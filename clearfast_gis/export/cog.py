@@ -287,14 +287,19 @@ class CogStack:
 
 def _keep_decoded(raw: Path, bands: np.ndarray) -> None:
     """Write ``bands`` to ``raw`` (float32, C order) under a temporary name, then rename it,
-    so that a concurrent reader sees the whole file or none (scratch: not synced to disk)."""
-    fd, tmp = tempfile.mkstemp(prefix=f".{raw.stem}.", suffix=".part", dir=raw.parent)
+    so that a concurrent reader sees the whole file or none (scratch: not synced to disk).
+    Without room on the disk (or any other write error) the scan is simply not kept: it is
+    decoded again at its next read."""
+    tmp = None
     try:
+        fd, tmp = tempfile.mkstemp(prefix=f".{raw.stem}.", suffix=".part", dir=raw.parent)
         with os.fdopen(fd, "wb") as fh:
             np.ascontiguousarray(bands, dtype=np.float32).tofile(fh)
         os.replace(tmp, raw)
+    except OSError:
+        pass
     finally:
-        if os.path.exists(tmp):
+        if tmp is not None and os.path.exists(tmp):
             os.unlink(tmp)
 
 

@@ -73,6 +73,29 @@ def test_mosaic_stack_decoded_once(tmp_path):
     assert not scratch.exists()
     remove_decoded(tmp_path)  # nothing to delete: no error
 
+
+def test_mosaic_stack_decoded_once_without_room(tmp_path, monkeypatch):
+    """A decoded copy that cannot be written (disk full) is not kept: the scan is decoded
+    again at its next read, with the same values, and no partial file is left."""
+    import errno
+
+    bands = np.arange(2 * 20 * 30, dtype=np.float32).reshape(2, 20, 30)
+    write_cog(tmp_path / mosaic_rel(0), bands, TRANSFORM, 32636, ["a", "b"])
+    stack = mosaic_stack(tmp_path, [0], decode_once=True)
+
+    import os
+
+    from clearfast_gis.export import cog
+
+    def full(fd, *args, **kwargs):  # the temporary file is made, then the disk is full
+        os.close(fd)
+        raise OSError(errno.ENOSPC, "No space left on device")
+
+    monkeypatch.setattr(cog.os, "fdopen", full)
+    for _ in range(2):
+        np.testing.assert_array_equal(stack.scan(0), bands)
+    assert list((tmp_path / DECODED_REL).iterdir()) == []
+
 def test_round_trip_values_crs_tags(tmp_path, bands):
     path = tmp_path / "mosaics" / mosaic_name(7)
     t_s = parse_utc("2026-11-15T12:30:00Z")
