@@ -11,6 +11,8 @@ from __future__ import annotations
 
 import math
 import os
+import shutil
+import tempfile
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from datetime import UTC, datetime
@@ -21,7 +23,7 @@ from affine import Affine
 
 from clearfast_gis.atomic import atomic_path
 from clearfast_gis.errors import InvalidInput
-from clearfast_gis.export.layout import mosaic_rel
+from clearfast_gis.export.layout import DECODED_REL, mosaic_rel
 from clearfast_gis.parallel import n_threads
 from clearfast_gis.timeutil import format_utc, parse_utc
 
@@ -30,6 +32,13 @@ SCAN_TIME_TAG = "CLEARFAST_SCAN_TIME_UTC"
 
 BLOCK_SIZE_PX = 256
 """Tile size of the COG (pixels)."""
+
+DEFLATE_LEVEL = 1
+"""zlib level of the tiles' DEFLATE (lossless: any level decodes to the same values).
+
+On a trial mosaic (3 x 1097 x 1600 float32, floating-point predictor) level 1 compresses in
+0.27-0.29 CPU s against 0.51-0.70 s at GDAL's default 6, for a file 2 % larger (16.6 against
+16.2 MB); decoding costs the same."""
 
 
 @dataclass(frozen=True)
@@ -181,8 +190,8 @@ def write_cog(
         with MemoryFile(ext=".tif") as out:
             rasterio.shutil.copy(
                 src, out.name, driver="COG", COMPRESS="DEFLATE", PREDICTOR="3",
-                BLOCKSIZE=str(BLOCK_SIZE_PX), OVERVIEWS="FORCE_USE_EXISTING",
-                BIGTIFF="IF_SAFER", NUM_THREADS=str(n_threads()),
+                LEVEL=str(DEFLATE_LEVEL), BLOCKSIZE=str(BLOCK_SIZE_PX),
+                OVERVIEWS="FORCE_USE_EXISTING", BIGTIFF="IF_SAFER", NUM_THREADS=str(n_threads()),
             )
             data = out.read()
     with atomic_path(path) as tmp:
@@ -227,8 +236,14 @@ def read_mosaic(path: str | os.PathLike) -> Mosaic:
 @dataclass(frozen=True)
 class CogStack:
     """The scan mosaics of a products folder as a
-    :class:`~clearfast_gis.detection.stack.ScanStack`: a scan is read from its COG each time
-    it is asked for, so that no pass holds more than the scans it is reading.
+    :class:`~clearfast_gis.detection.stack.ScanStack`: a scan is read each time it is asked
+    for, so that no pass holds more than the scans it is reading.
+
+    With a ``decoded`` folder, a scan's COG is decoded once, at its first read by any stack
+    of the run, and its bands are kept there as raw float32 (4 B H W bytes a scan, 21 MB on
+    the trial's grid); later reads copy them back (about a tenth of the cost of decoding the
+    tiles' DEFLATE again: the residuals, the detector and the stages after it pass over the
+    scans up to seven times). The values are the COG's, bit for bit.
 
     Attributes
     ----------
@@ -239,12 +254,17 @@ class CogStack:
         (H, W) of every mosaic.
     transform : affine.Affine
         The mosaics' grid transform.
+    decoded : Path or None
+        Folder of the decoded scans (:func:`mosaic_stack`; valid while no COG is rewritten:
+        the run deletes it with :func:`remove_decoded` when it starts and ends), or None to
+        decode the COG at every read.
     """
 
     paths: tuple[Path, ...]
     n_bands: int
     shape: tuple[int, int]
     transform: Affine
+    decoded: Path | None = None
 
     @property
     def n_scans(self) -> int:
@@ -252,17 +272,63 @@ class CogStack:
 
     def scan(self, i: int) -> np.ndarray:
         """The bands of scan ``i``, float32 (B, H, W), degrees C."""
+        shape = (self.n_bands, *self.shape)
+        raw = None if self.decoded is None else self.decoded / f"{self.paths[i].stem}.f32"
+        if raw is not None and raw.exists():
+            return np.fromfile(raw, dtype=np.float32).reshape(shape)
         bands = read_mosaic(self.paths[i]).bands_c
-        if bands.shape != (self.n_bands, *self.shape):
-            raise InvalidInput(f"mosaic of shape {bands.shape}, the first scan's is "
-                               f"{(self.n_bands, *self.shape)}", self.paths[i])
+        if bands.shape != shape:
+            raise InvalidInput(f"mosaic of shape {bands.shape}, the first scan's is {shape}",
+                               self.paths[i])
+        if raw is not None:
+            _keep_decoded(raw, bands)
         return bands
 
 
-def mosaic_stack(products: Path, scans: list[int]) -> CogStack:
+def _keep_decoded(raw: Path, bands: np.ndarray) -> None:
+    """Write ``bands`` to ``raw`` (float32, C order) under a temporary name, then rename it,
+    so that a concurrent reader sees the whole file or none (scratch: not synced to disk).
+    Without room on the disk (or any other write error) the scan is simply not kept: it is
+    decoded again at its next read."""
+    tmp = None
+    try:
+        fd, tmp = tempfile.mkstemp(prefix=f".{raw.stem}.", suffix=".part", dir=raw.parent)
+        with os.fdopen(fd, "wb") as fh:
+            np.ascontiguousarray(bands, dtype=np.float32).tofile(fh)
+        os.replace(tmp, raw)
+    except OSError:
+        pass
+    finally:
+        if tmp is not None and os.path.exists(tmp):
+            os.unlink(tmp)
+
+
+def remove_decoded(products: Path) -> None:
+    """Delete the decoded scans of a products folder (:data:`~clearfast_gis.export.layout.
+    DECODED_REL`), if any."""
+    shutil.rmtree(Path(products) / DECODED_REL, ignore_errors=True)
+
+
+def mosaic_stack(products: Path, scans: list[int], decode_once: bool = False) -> CogStack:
     """The scans' mosaics in a products folder, in the order of ``scans``, as a
-    :class:`CogStack` (the first mosaic read once for its shape and transform)."""
+    :class:`CogStack` (the first mosaic's header read for its shape and transform).
+
+    With ``decode_once``, each COG is decoded at most once and kept decoded in the
+    :data:`~clearfast_gis.export.layout.DECODED_REL` folder, shared by every such stack of the
+    products folder until :func:`remove_decoded` (call it before any COG is rewritten and when
+    the passes are done)."""
+    import rasterio
+    from rasterio.errors import RasterioIOError
+
     paths = tuple(Path(products) / mosaic_rel(s) for s in scans)
-    first = read_mosaic(paths[0])
-    return CogStack(paths, int(first.bands_c.shape[0]), tuple(first.bands_c.shape[1:]),
-                    first.transform)
+    try:
+        with rasterio.open(paths[0]) as ds:
+            n_bands, shape, transform = int(ds.count), (int(ds.height), int(ds.width)), \
+                ds.transform
+    except RasterioIOError as exc:
+        raise InvalidInput(f"cannot read the mosaic ({exc})", paths[0]) from None
+    decoded = None
+    if decode_once:
+        decoded = Path(products) / DECODED_REL
+        decoded.mkdir(parents=True, exist_ok=True)
+    return CogStack(paths, n_bands, shape, transform, decoded)

@@ -7,6 +7,11 @@ from __future__ import annotations
 STATE_DIR = ".clearfast"
 """Folder of the run state (and the scans' source maps) inside a products folder."""
 
+DECODED_REL = f"{STATE_DIR}/decoded"
+"""Scratch folder of a run inside a products folder: the scan mosaics decoded once from their
+COGs for the passes of the detector and the stages after it (raw float32, deleted when the
+run ends; see :class:`clearfast_gis.export.cog.CogStack`)."""
+
 
 def mosaic_name(scan: int) -> str:
     """File name of scan ``scan``'s mosaic inside ``mosaics/``: ``scan_007.tif``."""

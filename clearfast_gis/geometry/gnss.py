@@ -131,10 +131,17 @@ class PlatformTrack:
     max_gap_s: float = 5.0
     source: str = "gnss.nmea"
 
-    @property
+    @functools.cached_property
     def usable_time_s(self) -> np.ndarray:
-        """Times of the usable epochs, shape (M,)."""
+        """Times of the usable epochs, shape (M,) (selected once: a frame's pose asks for
+        one time at a time, and the selection over a day's 86,400 epochs cost more than the
+        interpolation)."""
         return self.time_s[self.usable]
+
+    @functools.cached_property
+    def usable_position_m(self) -> np.ndarray:
+        """Positions of the usable epochs, (M, 3) (selected once, as :attr:`usable_time_s`)."""
+        return self.position_m[self.usable]
 
     def distance_to_fix_s(self, time_s: np.ndarray) -> np.ndarray:
         """Seconds from each time to the nearest usable fix (inf if there is none)."""
@@ -180,7 +187,7 @@ class PlatformTrack:
         out = np.full((t.size, 3), np.nan)
         if tu.size == 0:
             return out
-        pos = self.position_m[self.usable]
+        pos = self.usable_position_m
         for k in range(3):
             out[:, k] = np.interp(t, tu, pos[:, k])
         out[~ok] = np.nan

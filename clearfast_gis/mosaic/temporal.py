@@ -8,8 +8,7 @@ from pathlib import Path
 
 import numpy as np
 
-from clearfast_gis.export.cog import read_mosaic
-from clearfast_gis.export.layout import mosaic_rel
+from clearfast_gis.export.cog import mosaic_stack
 from clearfast_gis.parallel import thread_imap
 from clearfast_gis.registration import register_conformal
 
@@ -90,26 +89,28 @@ def temporal_residual(reference: np.ndarray, mosaic: np.ndarray, max_shift_px: f
 
 
 def temporal_residuals(products: Path, scan_records: dict[int, dict], ref: int,
-                        measure: bool) -> np.ndarray:
+                        measure: bool, decode_once: bool = False) -> np.ndarray:
     """Residual misregistration of every scan's mosaic against the reference scan's (pixels),
     stored in ``scan_records[scan]["residual_px"]`` (None for the reference itself or when it
-    cannot be measured). Each mosaic is read once.
+    cannot be measured). Each mosaic is read once (with ``decode_once``, kept decoded for the
+    stages after: :func:`clearfast_gis.export.cog.mosaic_stack`).
 
     Returns
     -------
     bool (H, W)
         Cells seen by at least one scan (band 0), for the footprint.
     """
-    reference = read_mosaic(products / mosaic_rel(ref)).bands_c[0] if measure else None
+    scans = sorted(scan_records)
+    stack = mosaic_stack(products, scans, decode_once)
+    reference = stack.scan(scans.index(ref))[0] if measure else None
 
     def residual(scan: int) -> tuple[float | None, np.ndarray]:
-        mosaic = read_mosaic(products / mosaic_rel(scan)).bands_c[0]
+        mosaic = stack.scan(scans.index(scan))[0]
         if reference is None or scan == ref:
             return None, np.isfinite(mosaic)
         r = temporal_residual(reference, mosaic)
         return (None if math.isnan(r.shift_px) else r.shift_px), np.isfinite(mosaic)
 
-    scans = sorted(scan_records)
     seen = None
     for scan, (value, finite) in zip(scans, thread_imap(residual, scans), strict=True):
         scan_records[scan]["residual_px"] = value

@@ -51,7 +51,7 @@ def detect(c: RunContext) -> Detection:
     o = c.options
     times = np.array([scan_records[s]["time_s"] for s in scans])
     lon = float(read.ctx.survey.manifest["site"]["longitude_deg"])
-    stack = mosaic_stack(c.products, scans)
+    stack = mosaic_stack(c.products, scans, decode_once=True)  # decoded by the footprint's
     labels, feats = detect_on_mosaics(stack, times, stack.transform, read.grid.pixel_size, lon,
                                       o.d1_m, o.d2_m, o.epsilon, o.level, o.gamma,
                                       o.max_anomalies, level_fraction=o.level_fraction,

@@ -9,6 +9,7 @@ from pathlib import Path
 
 from clearfast_gis import kernels
 from clearfast_gis.errors import InvalidInput
+from clearfast_gis.export.cog import remove_decoded
 from clearfast_gis.export.manifest import read_products_manifest, write_products_manifest
 from clearfast_gis.parallel import serial_kernels
 from clearfast_gis.pipeline import stages
@@ -73,6 +74,7 @@ characterisation, products)
 def _run(c: RunContext, first: int | None, last: int) -> dict:
     """:func:`process_survey` once the kernel set is chosen: the loop over the stages."""
     t_all, cpu_all = time.perf_counter(), cpu_seconds()
+    remove_decoded(c.products)  # mosaics decoded by a run that did not end: maybe rewritten
     try:
         for k, stage in enumerate(STAGES[:last + 1]):
             if first is not None and k == 1:
@@ -85,6 +87,7 @@ def _run(c: RunContext, first: int | None, last: int) -> dict:
     finally:
         if c.job is not None:
             c.job.close()
+        remove_decoded(c.products)
     read = c[stages.READ]
     if stages.PRODUCTS in c.records:
         manifest = c[stages.PRODUCTS].manifest

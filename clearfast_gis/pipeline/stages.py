@@ -280,7 +280,7 @@ def _footprint(c: RunContext) -> Footprint:
     c.job.close()
     read = c[READ]
     valid = temporal_residuals(c.products, c[MOSAICS].scan_records, read.reference_scan,
-                               c.options.coregister)
+                               c.options.coregister, decode_once=True)
     write_footprint_geojson(c.products / "footprint.geojson", valid, read.grid.transform,
                             read.epsg, read.ctx.survey.manifest["survey_id"])
     return Footprint(valid)

@@ -11,8 +11,8 @@ from hypothesis import strategies as st
 
 from clearfast_gis.errors import InvalidInput
 from clearfast_gis.export import band_description, mosaic_name, read_mosaic, write_cog
-from clearfast_gis.export.cog import default_overview_factors, mosaic_stack
-from clearfast_gis.export.layout import mosaic_rel
+from clearfast_gis.export.cog import default_overview_factors, mosaic_stack, remove_decoded
+from clearfast_gis.export.layout import DECODED_REL, mosaic_rel
 from clearfast_gis.timeutil import parse_utc
 
 TRANSFORM = Affine(0.05, 0.0, 532780.0, 0.0, -0.05, 3891985.0)
@@ -43,6 +43,58 @@ def test_mosaic_stack_of_a_products_folder(tmp_path):
         got = stack.scan(k)
         assert got.dtype == np.float32
         np.testing.assert_array_equal(got, bands[s])
+
+
+def test_mosaic_stack_decoded_once(tmp_path):
+    """With ``decode_once`` a scan's COG is decoded at its first read and kept as raw float32
+    in the run's scratch folder, shared by the stacks of the folder: every later read gives
+    the COG's values bit for bit without decoding it (the COG may even be gone); the scratch
+    is deleted by ``remove_decoded``."""
+    rng = np.random.default_rng(4)
+    scans = [3, 1]
+    bands = {s: rng.normal(10.0 * s, 2.0, size=(2, 30, 50)).astype(np.float32) for s in scans}
+    bands[1][0, 3:9, 4:6] = np.nan
+    for s in scans:
+        write_cog(tmp_path / mosaic_rel(s), bands[s], TRANSFORM, 32636, ["a", "b"])
+    scratch = tmp_path / DECODED_REL
+    stack = mosaic_stack(tmp_path, scans, decode_once=True)
+    assert stack.decoded == scratch and scratch.is_dir() and not any(scratch.iterdir())
+    np.testing.assert_array_equal(stack.scan(1), bands[1])
+    assert sorted(p.name for p in scratch.iterdir()) == ["scan_001.f32"]
+    (tmp_path / mosaic_rel(1)).unlink()  # read back from the scratch, not decoded again
+    other = mosaic_stack(tmp_path, scans, decode_once=True)  # header of scan 3
+    for stk in (stack, other):
+        for k, s in enumerate(scans):
+            got = stk.scan(k)
+            assert got.dtype == np.float32 and got.shape == (2, 30, 50)
+            np.testing.assert_array_equal(got, bands[s])
+    assert sorted(p.name for p in scratch.iterdir()) == ["scan_001.f32", "scan_003.f32"]
+    remove_decoded(tmp_path)
+    assert not scratch.exists()
+    remove_decoded(tmp_path)  # nothing to delete: no error
+
+
+def test_mosaic_stack_decoded_once_without_room(tmp_path, monkeypatch):
+    """A decoded copy that cannot be written (disk full) is not kept: the scan is decoded
+    again at its next read, with the same values, and no partial file is left."""
+    import errno
+
+    bands = np.arange(2 * 20 * 30, dtype=np.float32).reshape(2, 20, 30)
+    write_cog(tmp_path / mosaic_rel(0), bands, TRANSFORM, 32636, ["a", "b"])
+    stack = mosaic_stack(tmp_path, [0], decode_once=True)
+
+    import os
+
+    from clearfast_gis.export import cog
+
+    def full(fd, *args, **kwargs):  # the temporary file is made, then the disk is full
+        os.close(fd)
+        raise OSError(errno.ENOSPC, "No space left on device")
+
+    monkeypatch.setattr(cog.os, "fdopen", full)
+    for _ in range(2):
+        np.testing.assert_array_equal(stack.scan(0), bands)
+    assert list((tmp_path / DECODED_REL).iterdir()) == []
 
 def test_round_trip_values_crs_tags(tmp_path, bands):
     path = tmp_path / "mosaics" / mosaic_name(7)

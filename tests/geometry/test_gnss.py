@@ -112,6 +112,10 @@ def test_track_interpolates_and_skips_no_fix():
     assert p[0] == pytest.approx([x[1], y[1], 12.1])
     assert p[1] == pytest.approx([(x[1] + x[3]) / 2, (y[1] + y[3]) / 2, 12.2])
     assert p[2, 2] == pytest.approx(12.25)
+    # one time at a time (a frame's pose) as in one call: the usable epochs are selected once
+    one = np.concatenate([track.at([t1]) for t1 in (1.0, 2.0, 2.5, 9.0)])
+    np.testing.assert_array_equal(one, p)
+    assert track.usable_time_s.tolist() == [0, 1, 3, 4, 5, 6, 7, 8, 9]
     assert track.fix_quality_at([2.1, 5.2, 5.6]).tolist() == [0, 5, 4]
     assert track.degraded_at([2.0, 5.0, 6.0]).tolist() == [True, True, False]
 

@@ -75,11 +75,19 @@ def test_from_a_later_stage_redoes_it_and_never_keeps_the_old_products(demo_surv
     detection stage would otherwise find the earlier run's products up to date."""
     import shutil
 
+    import numpy as np
+
+    from clearfast_gis.export.layout import DECODED_REL
     from clearfast_gis.pipeline import process_survey
 
     products = tmp_path / "products"
     shutil.copytree(demo_products, products)
     (products / "anomalies.gpkg").unlink()
+    # a killed run's decoded mosaics (scratch) are never read: the run deletes them first
+    stale = products / DECODED_REL / "scan_000.f32"
+    stale.parent.mkdir(parents=True)
+    np.zeros(7, dtype=np.float32).tofile(stale)
     manifest = process_survey(demo_survey, products, from_stage="characterisation")
     assert (products / "anomalies.gpkg").exists()
     assert manifest["timings_s"]["characterisation"] > 0.05
+    assert not (products / DECODED_REL).exists()  # and deleted when the run ends
