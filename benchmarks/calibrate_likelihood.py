@@ -11,6 +11,10 @@ Every detection of the products that passes the screening
 within the radius plus 5 cm of a true mine of any depth. The surveys fitted on must never be
 the ones the model is scored on (``benchmarks/detection_accuracy.py`` scores other seeds).
 Logistic regression: scikit-learn, L2 penalty C = 1 on standardised features.
+
+``--check`` fits nothing: it scores the stored model on the surveys given (which must not be
+the ones it was fitted on): its reliability table (of the suspects predicted p, the share
+that are mines) and, per survey, the mines it expects (sum of p_mine) against those found.
 """
 
 from __future__ import annotations
@@ -26,7 +30,7 @@ from clearfast_gis.detection.screening import screen
 from clearfast_gis.evaluation.operating import reliability_table
 from clearfast_gis.evaluation.truth import MINE_KINDS, read_truth_objects
 
-MODEL_VERSION = "logistic-3"
+MODEL_VERSION = "logistic-4"
 
 
 def detection_records(products: Path) -> list[dict]:
@@ -69,6 +73,8 @@ def main() -> None:
     ap.add_argument("--pair", nargs=3, action="append", default=[],
                     metavar=("NAME", "SURVEY", "PRODUCTS"))
     ap.add_argument("--write", action="store_true", help="write clearfast_gis/data/likelihood.json")
+    ap.add_argument("--check", action="store_true",
+                    help="score the stored model on these surveys instead of fitting")
     args = ap.parse_args()
     xs, ys = [], []
     pairs = [(t, Path(args.work) / t / "survey", Path(args.work) / t / "products")
@@ -81,6 +87,9 @@ def main() -> None:
         ys.append(y)
         print(f"{tag}: {len(y)} suspects, {int(y.sum())} mines")
     x, y = np.vstack(xs), np.concatenate(ys)
+    if args.check:
+        check(pairs, xs, ys)
+        return
     mean, scale = x.mean(axis=0), x.std(axis=0)
     scale[scale == 0] = 1.0
     fit = LogisticRegression(C=1.0, max_iter=1000).fit((x - mean) / scale, y)
@@ -97,6 +106,27 @@ def main() -> None:
         out = Path(__file__).resolve().parents[1] / "clearfast_gis" / "data" / "likelihood.json"
         out.write_text(json.dumps(model, indent=1) + "\n")
         print(f"written {out}")
+
+
+def check(pairs: list, xs: list[np.ndarray], ys: list[np.ndarray]) -> None:
+    """Print the stored model's out-of-sample reliability over the surveys and, per survey,
+    the mines it expects (sum of p_mine over the screened suspects) against the mines."""
+    from clearfast_gis.detection.likelihood import load_model
+
+    model = load_model()
+    fitted = set(model["fitted_on"])
+    print(f"model {model['version']}; fitted on {', '.join(model['fitted_on'])}")
+    for (tag, _, _), x, y in zip(pairs, xs, ys, strict=True):
+        warn = "  (fitted on!)" if tag in fitted else ""
+        print(f"{tag}: expected {p_mine_from_features(x, model).sum():.1f} mines, "
+              f"{int(y.sum())} among {len(y)} suspects{warn}")
+    p = p_mine_from_features(np.vstack(xs), model)
+    y = np.concatenate(ys)
+    print(f"all: expected {p.sum():.1f} mines, {int(y.sum())} among {len(y)} suspects")
+    print("| p_mine | suspects | mean p_mine | share that are mines |")
+    print("|---|---|---|---|")
+    for row in reliability_table(p, y):
+        print(f"| {row['bin']} | {row['n']} | {row['mean_p']} | {row['mine_fraction']} |")
 
 
 if __name__ == "__main__":

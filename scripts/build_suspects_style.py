@@ -100,6 +100,7 @@ PRECISION = {
     "x": 2, "y": 2, "lat": 7, "lon": 7, "area_m2": 3, "diameter_m": 2, "circularity": 2,
     "depth_m": 3, "depth_sigma_m": 3, "confidence": 2, "cue_confidence": 2, "p_mine": 2,
     "contrast_day_k": 2, "contrast_night_k": 2, "mine_curve_r": 2,
+    "mine_curve_level": 2,
 }
 """Decimals shown for stored numbers (their unit is in the alias)."""
 
@@ -117,6 +118,7 @@ ALIASES = {
     "n_scans": "Scans seen", "contrast_day_k": "Day contrast (K)",
     "contrast_night_k": "Night contrast (K)",
     "mine_curve_r": "Match with a mine's diurnal curve (-1 to 1)",
+    "mine_curve_level": "Offset from a mine's diurnal curve (swings)",
     "fix_quality": "GNSS fix quality",
     "figure": "Contrast curve", "contrast_series": "Contrast series (JSON)",
 }
@@ -127,7 +129,7 @@ FORM = (
                             "cue_confidence_pct", "status", "polarity", "set_aside_reason")),
         ("Burial depth and soil", ("depth", "diffusivity")),
         ("Thermal contrast", ("contrast_day_k", "contrast_night_k", "mine_curve_r",
-                              "n_scans")),
+                              "mine_curve_level", "n_scans")),
         ("Shape", ("diameter_m", "area_m2", "circularity")),
     )),
     ("Contrast curve", (("Contrast curve", ("figure",)),)),

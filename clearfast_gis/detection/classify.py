@@ -3,7 +3,10 @@
 Rules (documented in docs/detection.md):
 
 1. clutter when any clutter cue holds: circularity < 0.5 (irregular outline); summary polarity
-   'mixed' over several supporting scans (inconsistent thermal behaviour); a characterised
+   'mixed' over several supporting scans (inconsistent thermal behaviour) unless the contrast
+   curve follows the day's modelled mine curve (``mine_curve_r`` at least ``MINE_CURVE_R``:
+   a mine is warm by day and cool at night, and a weak one is supported by a day scan or two
+   and the cool morning scan; such an anomaly is ``unknown``); a characterised
    diffusivity like stone or metal (``clearfast_gis.thermal.cue.material_cue`` says stone or metal).
    An anomaly cool around midday is clutter too (stones and low-emissivity metal are cool by
    day; an explosive-filled object, a worse conductor than the soil, is warm by day), and so
@@ -11,7 +14,9 @@ Rules (documented in docs/detection.md):
    ``CLUTTER_CURVE_R``, :mod:`clearfast_gis.detection.curve`): a stone on a soil that
    stores heat is warm at every scan through its emissivity, but least warm at midday.
    A curve correlated less than ``MINE_CURVE_R`` (0.5) with the modelled mine's is not cued
-   as a mine (``unknown``).
+   as a mine (``unknown``), nor is one whose curve follows the mine's shape but sits above it
+   by more than ``MAX_MINE_CURVE_LEVEL`` of its swing (``mine_curve_level``, warm at night
+   when a mine is cool: the bare-soil edge of a grass patch).
    Anomalies scoring below ``MIN_MINE_SCORE`` (2) are ``unknown``: too weak to cue.
 2. otherwise, by the equivalent diameter: at_mine for 0.25-0.45 m (e.g. M6A2, 33.7 cm), ap_mine
    for 0.06-0.16 m (e.g. M2A4, 10.4 cm); unknown outside both ranges or without a metric size.
@@ -31,8 +36,8 @@ from collections.abc import Mapping
 
 from clearfast_gis.detection.features import AnomalyFeatures
 
-__all__ = ["AT_DIAMETER_M", "AP_DIAMETER_M", "CLASSES", "CLUTTER_CURVE_R", "MIN_MINE_SCORE",
-           "MINE_CURVE_R", "classify", "diffusivity_cue"]
+__all__ = ["AT_DIAMETER_M", "AP_DIAMETER_M", "CLASSES", "CLUTTER_CURVE_R", "MAX_MINE_CURVE_LEVEL",
+           "MIN_MINE_SCORE", "MINE_CURVE_R", "classify", "diffusivity_cue"]
 
 CLASSES = ("at_mine", "ap_mine", "clutter", "unknown")
 AT_DIAMETER_M = (0.25, 0.45)
@@ -106,9 +111,15 @@ and tropical surveys of seeds 10-11 gave 0.92-1.00, stones -0.77 to -0.50 (docs/
 below it the curve says nothing of a mine (``unknown``)."""
 
 
+MAX_MINE_CURVE_LEVEL = 0.5
+"""A mine cue needs its contrast curve to sit at most this far above the best-matching
+modelled mine curve, in swings of that curve (:func:`clearfast_gis.detection.curve.
+mine_curve_level`; docs/detection.md gives the measured ranges)."""
+
+
 def classify(features: AnomalyFeatures, inversion=None, contrast_day_k: float | None = None,
-             min_score: float = MIN_MINE_SCORE, mine_curve_r: float | None = None
-             ) -> tuple[str, float]:
+             min_score: float = MIN_MINE_SCORE, mine_curve_r: float | None = None,
+             mine_curve_level: float | None = None) -> tuple[str, float]:
     """Class cue and confidence of one anomaly.
 
     Parameters
@@ -130,6 +141,11 @@ def classify(features: AnomalyFeatures, inversion=None, contrast_day_k: float | 
         (-1 to 1, :func:`clearfast_gis.detection.curve.mine_curve_match`); below
         :data:`CLUTTER_CURVE_R` the anomaly is clutter, below :data:`MINE_CURVE_R` it is
         not cued as a mine.
+    mine_curve_level : float, optional
+        Offset of the contrast curve from the best-matching modelled mine curve, in swings
+        of that curve (:func:`clearfast_gis.detection.curve.mine_curve_level`); above
+        :data:`MAX_MINE_CURVE_LEVEL` (warm at every scan, where a mine is cool at night) the
+        anomaly is not cued as a mine.
 
     Returns
     -------
@@ -140,7 +156,13 @@ def classify(features: AnomalyFeatures, inversion=None, contrast_day_k: float | 
     material = None if alpha is None else _material(alpha, inversion)
     n_total = len(features.polarity_per_scan)
     irregular = features.circularity < 0.5
-    inconsistent = features.polarity == "mixed" and features.n_scans >= 3
+    # warm in some scans and cool in others is what a mine does when its curve follows the
+    # day's modelled mine curve (a weak mine misses the day or the night scans' support):
+    # then not clutter, but not a mine cue either (``unknown``)
+    follows = mine_curve_r is not None and math.isfinite(mine_curve_r) \
+        and mine_curve_r >= MINE_CURVE_R
+    mixed = features.polarity == "mixed" and features.n_scans >= 3
+    inconsistent = mixed and not follows
     hard = material == "stone_metal"
 
     detect_term = 1.0 - math.exp(-max(features.score, 0.0) / 3.0)
@@ -162,6 +184,9 @@ def classify(features: AnomalyFeatures, inversion=None, contrast_day_k: float | 
         return "clutter", round(1.0 - product, 4)
     unlike = mine_curve_r is not None and math.isfinite(mine_curve_r) \
         and mine_curve_r < MINE_CURVE_R
+    unlike = unlike or mixed or (mine_curve_level is not None
+                                 and math.isfinite(mine_curve_level)
+                                 and mine_curve_level > MAX_MINE_CURVE_LEVEL)
     if features.score < min_score or irregular or inconsistent or hard or unlike:
         return "unknown", round(product, 4)
     d = features.diameter_m

@@ -15,6 +15,9 @@ cool_by_day   1 when the daytime contrast is negative (stones, metal), else 0
 characterised 1 when the inversion's status is ``ok``, else 0
 curve_match   ``mine_curve_r``: correlation of the contrast curve with the day's modelled
               mine curve (:mod:`clearfast_gis.detection.curve`), -1 to 1; 0 when unknown
+curve_offset  ``min(|mine_curve_level|, 2)``: how far the curve sits off the modelled mine
+              curve, in swings of that curve (0 for a mine; about 1 for the bare edge of a
+              grass patch, warm at night); 0 when unknown
 ============  ==========================================================================
 
 The object's diffusivity is not a feature (it was, as ``alpha_misfit``, in ``logistic-2``):
@@ -47,12 +50,16 @@ import numpy as np
 from clearfast_gis.minetypes import MINE_TYPES
 
 FEATURES = ("strength", "size_misfit", "circularity", "diurnal", "cool_by_day",
-            "characterised", "curve_match")
+            "characterised", "curve_match", "curve_offset")
 """Model features, in the order of the coefficients."""
 
 MINE_TYPE_DIAMETERS_M = {t.name: t.diameter_m for t in MINE_TYPES}
 """Diameters of the mine types expected on the surveys
 (:data:`~clearfast_gis.minetypes.MINE_TYPES`), m."""
+
+MAX_CURVE_OFFSET = 2.0
+"""``curve_offset`` is capped here (swings of the modelled mine curve): farther off says no
+more."""
 
 PARAMETERS = "likelihood.json"
 """The fitted model's file in ``clearfast_gis/data``."""
@@ -72,8 +79,11 @@ def features(record: Mapping) -> np.ndarray:
     ok = record.get("status") == "ok"
     match = record.get("mine_curve_r")
     match = float(match) if match is not None and math.isfinite(float(match)) else 0.0
+    level = record.get("mine_curve_level")
+    offset = min(abs(float(level)), MAX_CURVE_OFFSET) \
+        if level is not None and math.isfinite(float(level)) else 0.0
     return np.array([math.log10(max(score, 0.1)), min(size, 3.0), circ, diurnal, cool,
-                     1.0 if ok else 0.0, match])
+                     1.0 if ok else 0.0, match, offset])
 
 
 @lru_cache(maxsize=1)

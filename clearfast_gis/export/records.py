@@ -11,7 +11,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from clearfast_gis.detection import classify
-from clearfast_gis.detection.curve import match_curves, mine_curve_match
+from clearfast_gis.detection.curve import match_curves, mine_curve_level, mine_curve_match
 from clearfast_gis.detection.features import AnomalyFeatures
 from clearfast_gis.detection.markers import MarkerMatch
 from clearfast_gis.solar import mean_solar_hour
@@ -95,9 +95,11 @@ def suspect_records(anomalies: AnomalySet, times_s: np.ndarray, longitude_deg: f
         inv = anomalies.inversions.get(f.id)
         aid = f"{survey_code}-{f.id:04d}"
         day, night = _day_night_contrast(times_s, f.contrast_k, longitude_deg)
-        match = math.nan if curves is None else mine_curve_match(first_band(f.contrast_k),
-                                                                 curves)
-        cue, conf = classify(f, inv, contrast_day_k=day, mine_curve_r=match)
+        series = first_band(f.contrast_k)
+        match = math.nan if curves is None else mine_curve_match(series, curves)
+        level = math.nan if curves is None else mine_curve_level(series, curves)
+        cue, conf = classify(f, inv, contrast_day_k=day, mine_curve_r=match,
+                             mine_curve_level=level)
         rec = {
             "anomaly_id": aid, "x": float(f.x), "y": float(f.y),
             "area_m2": float(f.area_m2), "diameter_m": float(f.diameter_m),
@@ -111,6 +113,7 @@ def suspect_records(anomalies: AnomalySet, times_s: np.ndarray, longitude_deg: f
             "diurnal_behaviour": f.polarity, "class_cue": cue, "cue_confidence": float(conf),
             "n_scans": int(f.n_scans), "contrast_day_k": day, "contrast_night_k": night,
             "mine_curve_r": round(match, 3) if math.isfinite(match) else None,
+            "mine_curve_level": round(level, 3) if math.isfinite(level) else None,
             "fix_quality": fix_quality, "figure": figure_name(aid),
             "contrast_series": {"time_utc": [format_utc(t) for t in times_s],
                                 "contrast_k": [float(v) for v in first_band(f.contrast_k)]},

@@ -36,6 +36,7 @@ SUSPECT_COLUMNS: dict[str, str] = {
     "contrast_day_k": "float",
     "contrast_night_k": "float",
     "mine_curve_r": "float",
+    "mine_curve_level": "float",
     "fix_quality": "Int64",
     "figure": "str",
     "contrast_series": "str",

@@ -1,32 +1,32 @@
 <!DOCTYPE qgis PUBLIC 'http://mrcc.com/qgis.dtd' 'SYSTEM'>
-<qgis minScale="100000000" simplifyDrawingTol="1" simplifyDrawingHints="1" simplifyLocal="1" hasScaleBasedVisibilityFlag="0" simplifyAlgorithm="0" simplifyMaxScale="1" symbologyReferenceScale="-1" styleCategories="Symbology|Labeling|Fields|Forms|MapTips|AttributeTable|Rendering" version="3.22.16-Białowieża" labelsEnabled="0" maxScale="0">
-  <renderer-v2 enableorderby="0" attr="polarity" forceraster="0" symbollevels="0" type="categorizedSymbol" referencescale="-1">
+<qgis styleCategories="Symbology|Labeling|Fields|Forms|MapTips|AttributeTable|Rendering" simplifyAlgorithm="0" simplifyLocal="1" version="3.22.16-Białowieża" minScale="100000000" simplifyDrawingHints="1" labelsEnabled="0" hasScaleBasedVisibilityFlag="0" maxScale="0" symbologyReferenceScale="-1" simplifyDrawingTol="1" simplifyMaxScale="1">
+  <renderer-v2 referencescale="-1" attr="polarity" enableorderby="0" type="categorizedSymbol" forceraster="0" symbollevels="0">
     <categories>
-      <category symbol="0" label="Warm by day" value="hot" render="true"/>
-      <category symbol="1" label="Cool by day" value="cold" render="true"/>
+      <category render="true" label="Warm by day" symbol="0" value="hot"/>
+      <category render="true" label="Cool by day" symbol="1" value="cold"/>
     </categories>
     <symbols>
-      <symbol force_rhr="0" alpha="1" clip_to_extent="1" name="0" type="fill">
+      <symbol type="fill" force_rhr="0" clip_to_extent="1" name="0" alpha="1">
         <data_defined_properties>
           <Option type="Map">
-            <Option value="" name="name" type="QString"/>
+            <Option type="QString" name="name" value=""/>
             <Option name="properties"/>
-            <Option value="collection" name="type" type="QString"/>
+            <Option type="QString" name="type" value="collection"/>
           </Option>
         </data_defined_properties>
-        <layer pass="0" locked="0" class="SimpleFill" enabled="1">
+        <layer enabled="1" class="SimpleFill" locked="0" pass="0">
           <Option type="Map">
-            <Option value="3x:0,0,0,0,0,0" name="border_width_map_unit_scale" type="QString"/>
-            <Option value="0,0,0,0" name="color" type="QString"/>
-            <Option value="bevel" name="joinstyle" type="QString"/>
-            <Option value="0,0" name="offset" type="QString"/>
-            <Option value="3x:0,0,0,0,0,0" name="offset_map_unit_scale" type="QString"/>
-            <Option value="MM" name="offset_unit" type="QString"/>
-            <Option value="215,48,39,255" name="outline_color" type="QString"/>
-            <Option value="solid" name="outline_style" type="QString"/>
-            <Option value="0.5" name="outline_width" type="QString"/>
-            <Option value="MM" name="outline_width_unit" type="QString"/>
-            <Option value="no" name="style" type="QString"/>
+            <Option type="QString" name="border_width_map_unit_scale" value="3x:0,0,0,0,0,0"/>
+            <Option type="QString" name="color" value="0,0,0,0"/>
+            <Option type="QString" name="joinstyle" value="bevel"/>
+            <Option type="QString" name="offset" value="0,0"/>
+            <Option type="QString" name="offset_map_unit_scale" value="3x:0,0,0,0,0,0"/>
+            <Option type="QString" name="offset_unit" value="MM"/>
+            <Option type="QString" name="outline_color" value="215,48,39,255"/>
+            <Option type="QString" name="outline_style" value="solid"/>
+            <Option type="QString" name="outline_width" value="0.5"/>
+            <Option type="QString" name="outline_width_unit" value="MM"/>
+            <Option type="QString" name="style" value="no"/>
           </Option>
           <prop v="3x:0,0,0,0,0,0" k="border_width_map_unit_scale"/>
           <prop v="0,0,0,0" k="color"/>
@@ -41,34 +41,34 @@
           <prop v="no" k="style"/>
           <data_defined_properties>
             <Option type="Map">
-              <Option value="" name="name" type="QString"/>
+              <Option type="QString" name="name" value=""/>
               <Option name="properties"/>
-              <Option value="collection" name="type" type="QString"/>
+              <Option type="QString" name="type" value="collection"/>
             </Option>
           </data_defined_properties>
         </layer>
       </symbol>
-      <symbol force_rhr="0" alpha="1" clip_to_extent="1" name="1" type="fill">
+      <symbol type="fill" force_rhr="0" clip_to_extent="1" name="1" alpha="1">
         <data_defined_properties>
           <Option type="Map">
-            <Option value="" name="name" type="QString"/>
+            <Option type="QString" name="name" value=""/>
             <Option name="properties"/>
-            <Option value="collection" name="type" type="QString"/>
+            <Option type="QString" name="type" value="collection"/>
           </Option>
         </data_defined_properties>
-        <layer pass="0" locked="0" class="SimpleFill" enabled="1">
+        <layer enabled="1" class="SimpleFill" locked="0" pass="0">
           <Option type="Map">
-            <Option value="3x:0,0,0,0,0,0" name="border_width_map_unit_scale" type="QString"/>
-            <Option value="0,0,0,0" name="color" type="QString"/>
-            <Option value="bevel" name="joinstyle" type="QString"/>
-            <Option value="0,0" name="offset" type="QString"/>
-            <Option value="3x:0,0,0,0,0,0" name="offset_map_unit_scale" type="QString"/>
-            <Option value="MM" name="offset_unit" type="QString"/>
-            <Option value="69,117,180,255" name="outline_color" type="QString"/>
-            <Option value="solid" name="outline_style" type="QString"/>
-            <Option value="0.5" name="outline_width" type="QString"/>
-            <Option value="MM" name="outline_width_unit" type="QString"/>
-            <Option value="no" name="style" type="QString"/>
+            <Option type="QString" name="border_width_map_unit_scale" value="3x:0,0,0,0,0,0"/>
+            <Option type="QString" name="color" value="0,0,0,0"/>
+            <Option type="QString" name="joinstyle" value="bevel"/>
+            <Option type="QString" name="offset" value="0,0"/>
+            <Option type="QString" name="offset_map_unit_scale" value="3x:0,0,0,0,0,0"/>
+            <Option type="QString" name="offset_unit" value="MM"/>
+            <Option type="QString" name="outline_color" value="69,117,180,255"/>
+            <Option type="QString" name="outline_style" value="solid"/>
+            <Option type="QString" name="outline_width" value="0.5"/>
+            <Option type="QString" name="outline_width_unit" value="MM"/>
+            <Option type="QString" name="style" value="no"/>
           </Option>
           <prop v="3x:0,0,0,0,0,0" k="border_width_map_unit_scale"/>
           <prop v="0,0,0,0" k="color"/>
@@ -83,9 +83,9 @@
           <prop v="no" k="style"/>
           <data_defined_properties>
             <Option type="Map">
-              <Option value="" name="name" type="QString"/>
+              <Option type="QString" name="name" value=""/>
               <Option name="properties"/>
-              <Option value="collection" name="type" type="QString"/>
+              <Option type="QString" name="type" value="collection"/>
             </Option>
           </data_defined_properties>
         </layer>
@@ -102,8 +102,8 @@
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option value="false" name="IsMultiline" type="bool"/>
-            <Option value="false" name="UseHtml" type="bool"/>
+            <Option type="bool" name="IsMultiline" value="false"/>
+            <Option type="bool" name="UseHtml" value="false"/>
           </Option>
         </config>
       </editWidget>
@@ -112,12 +112,12 @@
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option value="true" name="AllowNull" type="bool"/>
-            <Option value="1e+09" name="Max" type="double"/>
-            <Option value="-1e+09" name="Min" type="double"/>
-            <Option value="2" name="Precision" type="int"/>
-            <Option value="1" name="Step" type="int"/>
-            <Option value="SpinBox" name="Style" type="QString"/>
+            <Option type="bool" name="AllowNull" value="true"/>
+            <Option type="double" name="Max" value="1e+09"/>
+            <Option type="double" name="Min" value="-1e+09"/>
+            <Option type="int" name="Precision" value="2"/>
+            <Option type="int" name="Step" value="1"/>
+            <Option type="QString" name="Style" value="SpinBox"/>
           </Option>
         </config>
       </editWidget>
@@ -126,12 +126,12 @@
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option value="true" name="AllowNull" type="bool"/>
-            <Option value="1e+09" name="Max" type="double"/>
-            <Option value="-1e+09" name="Min" type="double"/>
-            <Option value="2" name="Precision" type="int"/>
-            <Option value="1" name="Step" type="int"/>
-            <Option value="SpinBox" name="Style" type="QString"/>
+            <Option type="bool" name="AllowNull" value="true"/>
+            <Option type="double" name="Max" value="1e+09"/>
+            <Option type="double" name="Min" value="-1e+09"/>
+            <Option type="int" name="Precision" value="2"/>
+            <Option type="int" name="Step" value="1"/>
+            <Option type="QString" name="Style" value="SpinBox"/>
           </Option>
         </config>
       </editWidget>
@@ -140,12 +140,12 @@
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option value="true" name="AllowNull" type="bool"/>
-            <Option value="1e+09" name="Max" type="double"/>
-            <Option value="-1e+09" name="Min" type="double"/>
-            <Option value="7" name="Precision" type="int"/>
-            <Option value="1" name="Step" type="int"/>
-            <Option value="SpinBox" name="Style" type="QString"/>
+            <Option type="bool" name="AllowNull" value="true"/>
+            <Option type="double" name="Max" value="1e+09"/>
+            <Option type="double" name="Min" value="-1e+09"/>
+            <Option type="int" name="Precision" value="7"/>
+            <Option type="int" name="Step" value="1"/>
+            <Option type="QString" name="Style" value="SpinBox"/>
           </Option>
         </config>
       </editWidget>
@@ -154,12 +154,12 @@
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option value="true" name="AllowNull" type="bool"/>
-            <Option value="1e+09" name="Max" type="double"/>
-            <Option value="-1e+09" name="Min" type="double"/>
-            <Option value="7" name="Precision" type="int"/>
-            <Option value="1" name="Step" type="int"/>
-            <Option value="SpinBox" name="Style" type="QString"/>
+            <Option type="bool" name="AllowNull" value="true"/>
+            <Option type="double" name="Max" value="1e+09"/>
+            <Option type="double" name="Min" value="-1e+09"/>
+            <Option type="int" name="Precision" value="7"/>
+            <Option type="int" name="Step" value="1"/>
+            <Option type="QString" name="Style" value="SpinBox"/>
           </Option>
         </config>
       </editWidget>
@@ -168,12 +168,12 @@
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option value="true" name="AllowNull" type="bool"/>
-            <Option value="1e+09" name="Max" type="double"/>
-            <Option value="-1e+09" name="Min" type="double"/>
-            <Option value="3" name="Precision" type="int"/>
-            <Option value="1" name="Step" type="int"/>
-            <Option value="SpinBox" name="Style" type="QString"/>
+            <Option type="bool" name="AllowNull" value="true"/>
+            <Option type="double" name="Max" value="1e+09"/>
+            <Option type="double" name="Min" value="-1e+09"/>
+            <Option type="int" name="Precision" value="3"/>
+            <Option type="int" name="Step" value="1"/>
+            <Option type="QString" name="Style" value="SpinBox"/>
           </Option>
         </config>
       </editWidget>
@@ -182,12 +182,12 @@
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option value="true" name="AllowNull" type="bool"/>
-            <Option value="1e+09" name="Max" type="double"/>
-            <Option value="-1e+09" name="Min" type="double"/>
-            <Option value="2" name="Precision" type="int"/>
-            <Option value="1" name="Step" type="int"/>
-            <Option value="SpinBox" name="Style" type="QString"/>
+            <Option type="bool" name="AllowNull" value="true"/>
+            <Option type="double" name="Max" value="1e+09"/>
+            <Option type="double" name="Min" value="-1e+09"/>
+            <Option type="int" name="Precision" value="2"/>
+            <Option type="int" name="Step" value="1"/>
+            <Option type="QString" name="Style" value="SpinBox"/>
           </Option>
         </config>
       </editWidget>
@@ -196,12 +196,12 @@
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option value="true" name="AllowNull" type="bool"/>
-            <Option value="1e+09" name="Max" type="double"/>
-            <Option value="-1e+09" name="Min" type="double"/>
-            <Option value="2" name="Precision" type="int"/>
-            <Option value="1" name="Step" type="int"/>
-            <Option value="SpinBox" name="Style" type="QString"/>
+            <Option type="bool" name="AllowNull" value="true"/>
+            <Option type="double" name="Max" value="1e+09"/>
+            <Option type="double" name="Min" value="-1e+09"/>
+            <Option type="int" name="Precision" value="2"/>
+            <Option type="int" name="Step" value="1"/>
+            <Option type="QString" name="Style" value="SpinBox"/>
           </Option>
         </config>
       </editWidget>
@@ -210,12 +210,12 @@
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option value="true" name="AllowNull" type="bool"/>
-            <Option value="1e+09" name="Max" type="double"/>
-            <Option value="-1e+09" name="Min" type="double"/>
-            <Option value="3" name="Precision" type="int"/>
-            <Option value="1" name="Step" type="int"/>
-            <Option value="SpinBox" name="Style" type="QString"/>
+            <Option type="bool" name="AllowNull" value="true"/>
+            <Option type="double" name="Max" value="1e+09"/>
+            <Option type="double" name="Min" value="-1e+09"/>
+            <Option type="int" name="Precision" value="3"/>
+            <Option type="int" name="Step" value="1"/>
+            <Option type="QString" name="Style" value="SpinBox"/>
           </Option>
         </config>
       </editWidget>
@@ -224,12 +224,12 @@
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option value="true" name="AllowNull" type="bool"/>
-            <Option value="1e+09" name="Max" type="double"/>
-            <Option value="-1e+09" name="Min" type="double"/>
-            <Option value="3" name="Precision" type="int"/>
-            <Option value="1" name="Step" type="int"/>
-            <Option value="SpinBox" name="Style" type="QString"/>
+            <Option type="bool" name="AllowNull" value="true"/>
+            <Option type="double" name="Max" value="1e+09"/>
+            <Option type="double" name="Min" value="-1e+09"/>
+            <Option type="int" name="Precision" value="3"/>
+            <Option type="int" name="Step" value="1"/>
+            <Option type="QString" name="Style" value="SpinBox"/>
           </Option>
         </config>
       </editWidget>
@@ -238,8 +238,8 @@
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option value="false" name="IsMultiline" type="bool"/>
-            <Option value="false" name="UseHtml" type="bool"/>
+            <Option type="bool" name="IsMultiline" value="false"/>
+            <Option type="bool" name="UseHtml" value="false"/>
           </Option>
         </config>
       </editWidget>
@@ -248,8 +248,8 @@
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option value="false" name="IsMultiline" type="bool"/>
-            <Option value="false" name="UseHtml" type="bool"/>
+            <Option type="bool" name="IsMultiline" value="false"/>
+            <Option type="bool" name="UseHtml" value="false"/>
           </Option>
         </config>
       </editWidget>
@@ -258,8 +258,8 @@
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option value="false" name="IsMultiline" type="bool"/>
-            <Option value="false" name="UseHtml" type="bool"/>
+            <Option type="bool" name="IsMultiline" value="false"/>
+            <Option type="bool" name="UseHtml" value="false"/>
           </Option>
         </config>
       </editWidget>
@@ -268,8 +268,8 @@
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option value="false" name="IsMultiline" type="bool"/>
-            <Option value="false" name="UseHtml" type="bool"/>
+            <Option type="bool" name="IsMultiline" value="false"/>
+            <Option type="bool" name="UseHtml" value="false"/>
           </Option>
         </config>
       </editWidget>
@@ -278,8 +278,8 @@
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option value="false" name="IsMultiline" type="bool"/>
-            <Option value="false" name="UseHtml" type="bool"/>
+            <Option type="bool" name="IsMultiline" value="false"/>
+            <Option type="bool" name="UseHtml" value="false"/>
           </Option>
         </config>
       </editWidget>
@@ -288,12 +288,12 @@
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option value="true" name="AllowNull" type="bool"/>
-            <Option value="1e+09" name="Max" type="double"/>
-            <Option value="-1e+09" name="Min" type="double"/>
-            <Option value="2" name="Precision" type="int"/>
-            <Option value="1" name="Step" type="int"/>
-            <Option value="SpinBox" name="Style" type="QString"/>
+            <Option type="bool" name="AllowNull" value="true"/>
+            <Option type="double" name="Max" value="1e+09"/>
+            <Option type="double" name="Min" value="-1e+09"/>
+            <Option type="int" name="Precision" value="2"/>
+            <Option type="int" name="Step" value="1"/>
+            <Option type="QString" name="Style" value="SpinBox"/>
           </Option>
         </config>
       </editWidget>
@@ -302,12 +302,12 @@
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option value="true" name="AllowNull" type="bool"/>
-            <Option value="1e+09" name="Max" type="double"/>
-            <Option value="-1e+09" name="Min" type="double"/>
-            <Option value="2" name="Precision" type="int"/>
-            <Option value="1" name="Step" type="int"/>
-            <Option value="SpinBox" name="Style" type="QString"/>
+            <Option type="bool" name="AllowNull" value="true"/>
+            <Option type="double" name="Max" value="1e+09"/>
+            <Option type="double" name="Min" value="-1e+09"/>
+            <Option type="int" name="Precision" value="2"/>
+            <Option type="int" name="Step" value="1"/>
+            <Option type="QString" name="Style" value="SpinBox"/>
           </Option>
         </config>
       </editWidget>
@@ -316,8 +316,8 @@
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option value="false" name="IsMultiline" type="bool"/>
-            <Option value="false" name="UseHtml" type="bool"/>
+            <Option type="bool" name="IsMultiline" value="false"/>
+            <Option type="bool" name="UseHtml" value="false"/>
           </Option>
         </config>
       </editWidget>
@@ -326,8 +326,8 @@
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option value="false" name="IsMultiline" type="bool"/>
-            <Option value="false" name="UseHtml" type="bool"/>
+            <Option type="bool" name="IsMultiline" value="false"/>
+            <Option type="bool" name="UseHtml" value="false"/>
           </Option>
         </config>
       </editWidget>
@@ -336,8 +336,8 @@
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option value="false" name="IsMultiline" type="bool"/>
-            <Option value="false" name="UseHtml" type="bool"/>
+            <Option type="bool" name="IsMultiline" value="false"/>
+            <Option type="bool" name="UseHtml" value="false"/>
           </Option>
         </config>
       </editWidget>
@@ -346,12 +346,12 @@
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option value="true" name="AllowNull" type="bool"/>
-            <Option value="1e+09" name="Max" type="double"/>
-            <Option value="-1e+09" name="Min" type="double"/>
-            <Option value="2" name="Precision" type="int"/>
-            <Option value="1" name="Step" type="int"/>
-            <Option value="SpinBox" name="Style" type="QString"/>
+            <Option type="bool" name="AllowNull" value="true"/>
+            <Option type="double" name="Max" value="1e+09"/>
+            <Option type="double" name="Min" value="-1e+09"/>
+            <Option type="int" name="Precision" value="2"/>
+            <Option type="int" name="Step" value="1"/>
+            <Option type="QString" name="Style" value="SpinBox"/>
           </Option>
         </config>
       </editWidget>
@@ -360,12 +360,12 @@
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option value="true" name="AllowNull" type="bool"/>
-            <Option value="1e+09" name="Max" type="double"/>
-            <Option value="-1e+09" name="Min" type="double"/>
-            <Option value="2" name="Precision" type="int"/>
-            <Option value="1" name="Step" type="int"/>
-            <Option value="SpinBox" name="Style" type="QString"/>
+            <Option type="bool" name="AllowNull" value="true"/>
+            <Option type="double" name="Max" value="1e+09"/>
+            <Option type="double" name="Min" value="-1e+09"/>
+            <Option type="int" name="Precision" value="2"/>
+            <Option type="int" name="Step" value="1"/>
+            <Option type="QString" name="Style" value="SpinBox"/>
           </Option>
         </config>
       </editWidget>
@@ -374,12 +374,26 @@
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option value="true" name="AllowNull" type="bool"/>
-            <Option value="1e+09" name="Max" type="double"/>
-            <Option value="-1e+09" name="Min" type="double"/>
-            <Option value="2" name="Precision" type="int"/>
-            <Option value="1" name="Step" type="int"/>
-            <Option value="SpinBox" name="Style" type="QString"/>
+            <Option type="bool" name="AllowNull" value="true"/>
+            <Option type="double" name="Max" value="1e+09"/>
+            <Option type="double" name="Min" value="-1e+09"/>
+            <Option type="int" name="Precision" value="2"/>
+            <Option type="int" name="Step" value="1"/>
+            <Option type="QString" name="Style" value="SpinBox"/>
+          </Option>
+        </config>
+      </editWidget>
+    </field>
+    <field configurationFlags="None" name="mine_curve_level">
+      <editWidget type="Range">
+        <config>
+          <Option type="Map">
+            <Option type="bool" name="AllowNull" value="true"/>
+            <Option type="double" name="Max" value="1e+09"/>
+            <Option type="double" name="Min" value="-1e+09"/>
+            <Option type="int" name="Precision" value="2"/>
+            <Option type="int" name="Step" value="1"/>
+            <Option type="QString" name="Style" value="SpinBox"/>
           </Option>
         </config>
       </editWidget>
@@ -388,8 +402,8 @@
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option value="false" name="IsMultiline" type="bool"/>
-            <Option value="false" name="UseHtml" type="bool"/>
+            <Option type="bool" name="IsMultiline" value="false"/>
+            <Option type="bool" name="UseHtml" value="false"/>
           </Option>
         </config>
       </editWidget>
@@ -405,8 +419,8 @@
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option value="false" name="IsMultiline" type="bool"/>
-            <Option value="false" name="UseHtml" type="bool"/>
+            <Option type="bool" name="IsMultiline" value="false"/>
+            <Option type="bool" name="UseHtml" value="false"/>
           </Option>
         </config>
       </editWidget>
@@ -415,8 +429,8 @@
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option value="false" name="IsMultiline" type="bool"/>
-            <Option value="false" name="UseHtml" type="bool"/>
+            <Option type="bool" name="IsMultiline" value="false"/>
+            <Option type="bool" name="UseHtml" value="false"/>
           </Option>
         </config>
       </editWidget>
@@ -425,8 +439,8 @@
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option value="false" name="IsMultiline" type="bool"/>
-            <Option value="false" name="UseHtml" type="bool"/>
+            <Option type="bool" name="IsMultiline" value="false"/>
+            <Option type="bool" name="UseHtml" value="false"/>
           </Option>
         </config>
       </editWidget>
@@ -435,8 +449,8 @@
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option value="false" name="IsMultiline" type="bool"/>
-            <Option value="false" name="UseHtml" type="bool"/>
+            <Option type="bool" name="IsMultiline" value="false"/>
+            <Option type="bool" name="UseHtml" value="false"/>
           </Option>
         </config>
       </editWidget>
@@ -445,8 +459,8 @@
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option value="false" name="IsMultiline" type="bool"/>
-            <Option value="false" name="UseHtml" type="bool"/>
+            <Option type="bool" name="IsMultiline" value="false"/>
+            <Option type="bool" name="UseHtml" value="false"/>
           </Option>
         </config>
       </editWidget>
@@ -455,8 +469,8 @@
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option value="false" name="IsMultiline" type="bool"/>
-            <Option value="false" name="UseHtml" type="bool"/>
+            <Option type="bool" name="IsMultiline" value="false"/>
+            <Option type="bool" name="UseHtml" value="false"/>
           </Option>
         </config>
       </editWidget>
@@ -486,150 +500,159 @@
     <alias field="contrast_day_k" index="20" name="Day contrast (K)"/>
     <alias field="contrast_night_k" index="21" name="Night contrast (K)"/>
     <alias field="mine_curve_r" index="22" name="Match with a mine's diurnal curve (-1 to 1)"/>
-    <alias field="fix_quality" index="23" name="GNSS fix quality"/>
-    <alias field="figure" index="24" name="Contrast curve"/>
-    <alias field="contrast_series" index="25" name="Contrast series (JSON)"/>
-    <alias field="short_id" index="26" name="Short id"/>
-    <alias field="depth" index="27" name="Burial depth ± 1σ"/>
-    <alias field="diffusivity" index="28" name="Thermal diffusivity ± 1σ"/>
-    <alias field="likelihood" index="29" name="Mine likelihood"/>
-    <alias field="cue_confidence_pct" index="30" name="Class cue confidence"/>
+    <alias field="mine_curve_level" index="23" name="Offset from a mine's diurnal curve (swings)"/>
+    <alias field="fix_quality" index="24" name="GNSS fix quality"/>
+    <alias field="figure" index="25" name="Contrast curve"/>
+    <alias field="contrast_series" index="26" name="Contrast series (JSON)"/>
+    <alias field="short_id" index="27" name="Short id"/>
+    <alias field="depth" index="28" name="Burial depth ± 1σ"/>
+    <alias field="diffusivity" index="29" name="Thermal diffusivity ± 1σ"/>
+    <alias field="likelihood" index="30" name="Mine likelihood"/>
+    <alias field="cue_confidence_pct" index="31" name="Class cue confidence"/>
   </aliases>
   <defaults>
-    <default applyOnUpdate="0" field="anomaly_id" expression=""/>
-    <default applyOnUpdate="0" field="x" expression=""/>
-    <default applyOnUpdate="0" field="y" expression=""/>
-    <default applyOnUpdate="0" field="lat" expression=""/>
-    <default applyOnUpdate="0" field="lon" expression=""/>
-    <default applyOnUpdate="0" field="area_m2" expression=""/>
-    <default applyOnUpdate="0" field="diameter_m" expression=""/>
-    <default applyOnUpdate="0" field="circularity" expression=""/>
-    <default applyOnUpdate="0" field="depth_m" expression=""/>
-    <default applyOnUpdate="0" field="depth_sigma_m" expression=""/>
-    <default applyOnUpdate="0" field="diffusivity_m2s" expression=""/>
-    <default applyOnUpdate="0" field="diffusivity_sigma_m2s" expression=""/>
-    <default applyOnUpdate="0" field="status" expression=""/>
-    <default applyOnUpdate="0" field="polarity" expression=""/>
-    <default applyOnUpdate="0" field="class_cue" expression=""/>
-    <default applyOnUpdate="0" field="cue_confidence" expression=""/>
-    <default applyOnUpdate="0" field="p_mine" expression=""/>
-    <default applyOnUpdate="0" field="priority" expression=""/>
-    <default applyOnUpdate="0" field="set_aside_reason" expression=""/>
-    <default applyOnUpdate="0" field="n_scans" expression=""/>
-    <default applyOnUpdate="0" field="contrast_day_k" expression=""/>
-    <default applyOnUpdate="0" field="contrast_night_k" expression=""/>
-    <default applyOnUpdate="0" field="mine_curve_r" expression=""/>
-    <default applyOnUpdate="0" field="fix_quality" expression=""/>
-    <default applyOnUpdate="0" field="figure" expression=""/>
-    <default applyOnUpdate="0" field="contrast_series" expression=""/>
-    <default applyOnUpdate="0" field="short_id" expression=""/>
-    <default applyOnUpdate="0" field="depth" expression=""/>
-    <default applyOnUpdate="0" field="diffusivity" expression=""/>
-    <default applyOnUpdate="0" field="likelihood" expression=""/>
-    <default applyOnUpdate="0" field="cue_confidence_pct" expression=""/>
+    <default field="anomaly_id" expression="" applyOnUpdate="0"/>
+    <default field="x" expression="" applyOnUpdate="0"/>
+    <default field="y" expression="" applyOnUpdate="0"/>
+    <default field="lat" expression="" applyOnUpdate="0"/>
+    <default field="lon" expression="" applyOnUpdate="0"/>
+    <default field="area_m2" expression="" applyOnUpdate="0"/>
+    <default field="diameter_m" expression="" applyOnUpdate="0"/>
+    <default field="circularity" expression="" applyOnUpdate="0"/>
+    <default field="depth_m" expression="" applyOnUpdate="0"/>
+    <default field="depth_sigma_m" expression="" applyOnUpdate="0"/>
+    <default field="diffusivity_m2s" expression="" applyOnUpdate="0"/>
+    <default field="diffusivity_sigma_m2s" expression="" applyOnUpdate="0"/>
+    <default field="status" expression="" applyOnUpdate="0"/>
+    <default field="polarity" expression="" applyOnUpdate="0"/>
+    <default field="class_cue" expression="" applyOnUpdate="0"/>
+    <default field="cue_confidence" expression="" applyOnUpdate="0"/>
+    <default field="p_mine" expression="" applyOnUpdate="0"/>
+    <default field="priority" expression="" applyOnUpdate="0"/>
+    <default field="set_aside_reason" expression="" applyOnUpdate="0"/>
+    <default field="n_scans" expression="" applyOnUpdate="0"/>
+    <default field="contrast_day_k" expression="" applyOnUpdate="0"/>
+    <default field="contrast_night_k" expression="" applyOnUpdate="0"/>
+    <default field="mine_curve_r" expression="" applyOnUpdate="0"/>
+    <default field="mine_curve_level" expression="" applyOnUpdate="0"/>
+    <default field="fix_quality" expression="" applyOnUpdate="0"/>
+    <default field="figure" expression="" applyOnUpdate="0"/>
+    <default field="contrast_series" expression="" applyOnUpdate="0"/>
+    <default field="short_id" expression="" applyOnUpdate="0"/>
+    <default field="depth" expression="" applyOnUpdate="0"/>
+    <default field="diffusivity" expression="" applyOnUpdate="0"/>
+    <default field="likelihood" expression="" applyOnUpdate="0"/>
+    <default field="cue_confidence_pct" expression="" applyOnUpdate="0"/>
   </defaults>
   <constraints>
-    <constraint exp_strength="0" unique_strength="0" field="anomaly_id" constraints="0" notnull_strength="0"/>
-    <constraint exp_strength="0" unique_strength="0" field="x" constraints="0" notnull_strength="0"/>
-    <constraint exp_strength="0" unique_strength="0" field="y" constraints="0" notnull_strength="0"/>
-    <constraint exp_strength="0" unique_strength="0" field="lat" constraints="0" notnull_strength="0"/>
-    <constraint exp_strength="0" unique_strength="0" field="lon" constraints="0" notnull_strength="0"/>
-    <constraint exp_strength="0" unique_strength="0" field="area_m2" constraints="0" notnull_strength="0"/>
-    <constraint exp_strength="0" unique_strength="0" field="diameter_m" constraints="0" notnull_strength="0"/>
-    <constraint exp_strength="0" unique_strength="0" field="circularity" constraints="0" notnull_strength="0"/>
-    <constraint exp_strength="0" unique_strength="0" field="depth_m" constraints="0" notnull_strength="0"/>
-    <constraint exp_strength="0" unique_strength="0" field="depth_sigma_m" constraints="0" notnull_strength="0"/>
-    <constraint exp_strength="0" unique_strength="0" field="diffusivity_m2s" constraints="0" notnull_strength="0"/>
-    <constraint exp_strength="0" unique_strength="0" field="diffusivity_sigma_m2s" constraints="0" notnull_strength="0"/>
-    <constraint exp_strength="0" unique_strength="0" field="status" constraints="0" notnull_strength="0"/>
-    <constraint exp_strength="0" unique_strength="0" field="polarity" constraints="0" notnull_strength="0"/>
-    <constraint exp_strength="0" unique_strength="0" field="class_cue" constraints="0" notnull_strength="0"/>
-    <constraint exp_strength="0" unique_strength="0" field="cue_confidence" constraints="0" notnull_strength="0"/>
-    <constraint exp_strength="0" unique_strength="0" field="p_mine" constraints="0" notnull_strength="0"/>
-    <constraint exp_strength="0" unique_strength="0" field="priority" constraints="0" notnull_strength="0"/>
-    <constraint exp_strength="0" unique_strength="0" field="set_aside_reason" constraints="0" notnull_strength="0"/>
-    <constraint exp_strength="0" unique_strength="0" field="n_scans" constraints="0" notnull_strength="0"/>
-    <constraint exp_strength="0" unique_strength="0" field="contrast_day_k" constraints="0" notnull_strength="0"/>
-    <constraint exp_strength="0" unique_strength="0" field="contrast_night_k" constraints="0" notnull_strength="0"/>
-    <constraint exp_strength="0" unique_strength="0" field="mine_curve_r" constraints="0" notnull_strength="0"/>
-    <constraint exp_strength="0" unique_strength="0" field="fix_quality" constraints="0" notnull_strength="0"/>
-    <constraint exp_strength="0" unique_strength="0" field="figure" constraints="0" notnull_strength="0"/>
-    <constraint exp_strength="0" unique_strength="0" field="contrast_series" constraints="0" notnull_strength="0"/>
-    <constraint exp_strength="0" unique_strength="0" field="short_id" constraints="0" notnull_strength="0"/>
-    <constraint exp_strength="0" unique_strength="0" field="depth" constraints="0" notnull_strength="0"/>
-    <constraint exp_strength="0" unique_strength="0" field="diffusivity" constraints="0" notnull_strength="0"/>
-    <constraint exp_strength="0" unique_strength="0" field="likelihood" constraints="0" notnull_strength="0"/>
-    <constraint exp_strength="0" unique_strength="0" field="cue_confidence_pct" constraints="0" notnull_strength="0"/>
+    <constraint exp_strength="0" field="anomaly_id" notnull_strength="0" constraints="0" unique_strength="0"/>
+    <constraint exp_strength="0" field="x" notnull_strength="0" constraints="0" unique_strength="0"/>
+    <constraint exp_strength="0" field="y" notnull_strength="0" constraints="0" unique_strength="0"/>
+    <constraint exp_strength="0" field="lat" notnull_strength="0" constraints="0" unique_strength="0"/>
+    <constraint exp_strength="0" field="lon" notnull_strength="0" constraints="0" unique_strength="0"/>
+    <constraint exp_strength="0" field="area_m2" notnull_strength="0" constraints="0" unique_strength="0"/>
+    <constraint exp_strength="0" field="diameter_m" notnull_strength="0" constraints="0" unique_strength="0"/>
+    <constraint exp_strength="0" field="circularity" notnull_strength="0" constraints="0" unique_strength="0"/>
+    <constraint exp_strength="0" field="depth_m" notnull_strength="0" constraints="0" unique_strength="0"/>
+    <constraint exp_strength="0" field="depth_sigma_m" notnull_strength="0" constraints="0" unique_strength="0"/>
+    <constraint exp_strength="0" field="diffusivity_m2s" notnull_strength="0" constraints="0" unique_strength="0"/>
+    <constraint exp_strength="0" field="diffusivity_sigma_m2s" notnull_strength="0" constraints="0" unique_strength="0"/>
+    <constraint exp_strength="0" field="status" notnull_strength="0" constraints="0" unique_strength="0"/>
+    <constraint exp_strength="0" field="polarity" notnull_strength="0" constraints="0" unique_strength="0"/>
+    <constraint exp_strength="0" field="class_cue" notnull_strength="0" constraints="0" unique_strength="0"/>
+    <constraint exp_strength="0" field="cue_confidence" notnull_strength="0" constraints="0" unique_strength="0"/>
+    <constraint exp_strength="0" field="p_mine" notnull_strength="0" constraints="0" unique_strength="0"/>
+    <constraint exp_strength="0" field="priority" notnull_strength="0" constraints="0" unique_strength="0"/>
+    <constraint exp_strength="0" field="set_aside_reason" notnull_strength="0" constraints="0" unique_strength="0"/>
+    <constraint exp_strength="0" field="n_scans" notnull_strength="0" constraints="0" unique_strength="0"/>
+    <constraint exp_strength="0" field="contrast_day_k" notnull_strength="0" constraints="0" unique_strength="0"/>
+    <constraint exp_strength="0" field="contrast_night_k" notnull_strength="0" constraints="0" unique_strength="0"/>
+    <constraint exp_strength="0" field="mine_curve_r" notnull_strength="0" constraints="0" unique_strength="0"/>
+    <constraint exp_strength="0" field="mine_curve_level" notnull_strength="0" constraints="0" unique_strength="0"/>
+    <constraint exp_strength="0" field="fix_quality" notnull_strength="0" constraints="0" unique_strength="0"/>
+    <constraint exp_strength="0" field="figure" notnull_strength="0" constraints="0" unique_strength="0"/>
+    <constraint exp_strength="0" field="contrast_series" notnull_strength="0" constraints="0" unique_strength="0"/>
+    <constraint exp_strength="0" field="short_id" notnull_strength="0" constraints="0" unique_strength="0"/>
+    <constraint exp_strength="0" field="depth" notnull_strength="0" constraints="0" unique_strength="0"/>
+    <constraint exp_strength="0" field="diffusivity" notnull_strength="0" constraints="0" unique_strength="0"/>
+    <constraint exp_strength="0" field="likelihood" notnull_strength="0" constraints="0" unique_strength="0"/>
+    <constraint exp_strength="0" field="cue_confidence_pct" notnull_strength="0" constraints="0" unique_strength="0"/>
   </constraints>
   <constraintExpressions>
-    <constraint desc="" field="anomaly_id" exp=""/>
-    <constraint desc="" field="x" exp=""/>
-    <constraint desc="" field="y" exp=""/>
-    <constraint desc="" field="lat" exp=""/>
-    <constraint desc="" field="lon" exp=""/>
-    <constraint desc="" field="area_m2" exp=""/>
-    <constraint desc="" field="diameter_m" exp=""/>
-    <constraint desc="" field="circularity" exp=""/>
-    <constraint desc="" field="depth_m" exp=""/>
-    <constraint desc="" field="depth_sigma_m" exp=""/>
-    <constraint desc="" field="diffusivity_m2s" exp=""/>
-    <constraint desc="" field="diffusivity_sigma_m2s" exp=""/>
-    <constraint desc="" field="status" exp=""/>
-    <constraint desc="" field="polarity" exp=""/>
-    <constraint desc="" field="class_cue" exp=""/>
-    <constraint desc="" field="cue_confidence" exp=""/>
-    <constraint desc="" field="p_mine" exp=""/>
-    <constraint desc="" field="priority" exp=""/>
-    <constraint desc="" field="set_aside_reason" exp=""/>
-    <constraint desc="" field="n_scans" exp=""/>
-    <constraint desc="" field="contrast_day_k" exp=""/>
-    <constraint desc="" field="contrast_night_k" exp=""/>
-    <constraint desc="" field="mine_curve_r" exp=""/>
-    <constraint desc="" field="fix_quality" exp=""/>
-    <constraint desc="" field="figure" exp=""/>
-    <constraint desc="" field="contrast_series" exp=""/>
-    <constraint desc="" field="short_id" exp=""/>
-    <constraint desc="" field="depth" exp=""/>
-    <constraint desc="" field="diffusivity" exp=""/>
-    <constraint desc="" field="likelihood" exp=""/>
-    <constraint desc="" field="cue_confidence_pct" exp=""/>
+    <constraint field="anomaly_id" exp="" desc=""/>
+    <constraint field="x" exp="" desc=""/>
+    <constraint field="y" exp="" desc=""/>
+    <constraint field="lat" exp="" desc=""/>
+    <constraint field="lon" exp="" desc=""/>
+    <constraint field="area_m2" exp="" desc=""/>
+    <constraint field="diameter_m" exp="" desc=""/>
+    <constraint field="circularity" exp="" desc=""/>
+    <constraint field="depth_m" exp="" desc=""/>
+    <constraint field="depth_sigma_m" exp="" desc=""/>
+    <constraint field="diffusivity_m2s" exp="" desc=""/>
+    <constraint field="diffusivity_sigma_m2s" exp="" desc=""/>
+    <constraint field="status" exp="" desc=""/>
+    <constraint field="polarity" exp="" desc=""/>
+    <constraint field="class_cue" exp="" desc=""/>
+    <constraint field="cue_confidence" exp="" desc=""/>
+    <constraint field="p_mine" exp="" desc=""/>
+    <constraint field="priority" exp="" desc=""/>
+    <constraint field="set_aside_reason" exp="" desc=""/>
+    <constraint field="n_scans" exp="" desc=""/>
+    <constraint field="contrast_day_k" exp="" desc=""/>
+    <constraint field="contrast_night_k" exp="" desc=""/>
+    <constraint field="mine_curve_r" exp="" desc=""/>
+    <constraint field="mine_curve_level" exp="" desc=""/>
+    <constraint field="fix_quality" exp="" desc=""/>
+    <constraint field="figure" exp="" desc=""/>
+    <constraint field="contrast_series" exp="" desc=""/>
+    <constraint field="short_id" exp="" desc=""/>
+    <constraint field="depth" exp="" desc=""/>
+    <constraint field="diffusivity" exp="" desc=""/>
+    <constraint field="likelihood" exp="" desc=""/>
+    <constraint field="cue_confidence_pct" exp="" desc=""/>
   </constraintExpressions>
   <expressionfields>
-    <field typeName="" comment="" subType="0" name="short_id" precision="0" length="0" type="10" expression="'S-' || lpad(to_string(to_int(regexp_substr(&quot;anomaly_id&quot;, '(\\d+)$'))), 3, '0')"/>
-    <field typeName="" comment="" subType="0" name="depth" precision="0" length="0" type="10" expression="CASE WHEN &quot;depth_m&quot; * 100 IS NULL THEN 'not characterised' WHEN &quot;depth_sigma_m&quot; * 100 IS NULL THEN format_number(&quot;depth_m&quot; * 100, 1) || ' cm' ELSE format_number(&quot;depth_m&quot; * 100, 1) || ' ± ' || format_number(&quot;depth_sigma_m&quot; * 100, 1) || ' cm' END"/>
-    <field typeName="" comment="" subType="0" name="diffusivity" precision="0" length="0" type="10" expression="CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 IS NULL THEN 'not characterised' WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 IS NULL THEN CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' mm²/s' ELSE CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' ± ' || CASE WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_sigma_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6))))) END || ' mm²/s' END"/>
-    <field typeName="" comment="" subType="0" name="likelihood" precision="0" length="0" type="10" expression="CASE WHEN attribute('p_mine') IS NULL THEN 'not estimated' ELSE format_number(100 * attribute('p_mine'), 0) || ' %' END"/>
-    <field typeName="" comment="" subType="0" name="cue_confidence_pct" precision="0" length="0" type="10" expression="CASE WHEN coalesce(attribute('cue_confidence'), attribute('confidence')) IS NULL THEN NULL ELSE format_number(100 * coalesce(attribute('cue_confidence'), attribute('confidence')), 0) || ' %' END"/>
-    <field typeName="" comment="" subType="0" name="short_id" precision="0" length="0" type="10" expression="'S-' || lpad(to_string(to_int(regexp_substr(&quot;anomaly_id&quot;, '(\\d+)$'))), 3, '0')"/>
-    <field typeName="" comment="" subType="0" name="depth" precision="0" length="0" type="10" expression="CASE WHEN &quot;depth_m&quot; * 100 IS NULL THEN 'not characterised' WHEN &quot;depth_sigma_m&quot; * 100 IS NULL THEN format_number(&quot;depth_m&quot; * 100, 1) || ' cm' ELSE format_number(&quot;depth_m&quot; * 100, 1) || ' ± ' || format_number(&quot;depth_sigma_m&quot; * 100, 1) || ' cm' END"/>
-    <field typeName="" comment="" subType="0" name="diffusivity" precision="0" length="0" type="10" expression="CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 IS NULL THEN 'not characterised' WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 IS NULL THEN CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' mm²/s' ELSE CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' ± ' || CASE WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_sigma_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6))))) END || ' mm²/s' END"/>
-    <field typeName="" comment="" subType="0" name="likelihood" precision="0" length="0" type="10" expression="CASE WHEN attribute('p_mine') IS NULL THEN 'not estimated' ELSE format_number(100 * attribute('p_mine'), 0) || ' %' END"/>
-    <field typeName="" comment="" subType="0" name="cue_confidence_pct" precision="0" length="0" type="10" expression="CASE WHEN coalesce(attribute('cue_confidence'), attribute('confidence')) IS NULL THEN NULL ELSE format_number(100 * coalesce(attribute('cue_confidence'), attribute('confidence')), 0) || ' %' END"/>
-    <field typeName="" comment="" subType="0" name="short_id" precision="0" length="0" type="10" expression="'S-' || lpad(to_string(to_int(regexp_substr(&quot;anomaly_id&quot;, '(\\d+)$'))), 3, '0')"/>
-    <field typeName="" comment="" subType="0" name="depth" precision="0" length="0" type="10" expression="CASE WHEN &quot;depth_m&quot; * 100 IS NULL THEN 'not characterised' WHEN &quot;depth_sigma_m&quot; * 100 IS NULL THEN format_number(&quot;depth_m&quot; * 100, 1) || ' cm' ELSE format_number(&quot;depth_m&quot; * 100, 1) || ' ± ' || format_number(&quot;depth_sigma_m&quot; * 100, 1) || ' cm' END"/>
-    <field typeName="" comment="" subType="0" name="diffusivity" precision="0" length="0" type="10" expression="CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 IS NULL THEN 'not characterised' WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 IS NULL THEN CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' mm²/s' ELSE CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' ± ' || CASE WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_sigma_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6))))) END || ' mm²/s' END"/>
-    <field typeName="" comment="" subType="0" name="likelihood" precision="0" length="0" type="10" expression="CASE WHEN attribute('p_mine') IS NULL THEN 'not estimated' ELSE format_number(100 * attribute('p_mine'), 0) || ' %' END"/>
-    <field typeName="" comment="" subType="0" name="cue_confidence_pct" precision="0" length="0" type="10" expression="CASE WHEN coalesce(attribute('cue_confidence'), attribute('confidence')) IS NULL THEN NULL ELSE format_number(100 * coalesce(attribute('cue_confidence'), attribute('confidence')), 0) || ' %' END"/>
-    <field typeName="" comment="" subType="0" name="short_id" precision="0" length="0" type="10" expression="'S-' || lpad(to_string(to_int(regexp_substr(&quot;anomaly_id&quot;, '(\\d+)$'))), 3, '0')"/>
-    <field typeName="" comment="" subType="0" name="depth" precision="0" length="0" type="10" expression="CASE WHEN &quot;depth_m&quot; * 100 IS NULL THEN 'not characterised' WHEN &quot;depth_sigma_m&quot; * 100 IS NULL THEN format_number(&quot;depth_m&quot; * 100, 1) || ' cm' ELSE format_number(&quot;depth_m&quot; * 100, 1) || ' ± ' || format_number(&quot;depth_sigma_m&quot; * 100, 1) || ' cm' END"/>
-    <field typeName="" comment="" subType="0" name="diffusivity" precision="0" length="0" type="10" expression="CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 IS NULL THEN 'not characterised' WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 IS NULL THEN CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' mm²/s' ELSE CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' ± ' || CASE WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_sigma_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6))))) END || ' mm²/s' END"/>
-    <field typeName="" comment="" subType="0" name="likelihood" precision="0" length="0" type="10" expression="CASE WHEN attribute('p_mine') IS NULL THEN 'not estimated' ELSE format_number(100 * attribute('p_mine'), 0) || ' %' END"/>
-    <field typeName="" comment="" subType="0" name="cue_confidence_pct" precision="0" length="0" type="10" expression="CASE WHEN coalesce(attribute('cue_confidence'), attribute('confidence')) IS NULL THEN NULL ELSE format_number(100 * coalesce(attribute('cue_confidence'), attribute('confidence')), 0) || ' %' END"/>
+    <field precision="0" typeName="" length="0" comment="" type="10" subType="0" expression="'S-' || lpad(to_string(to_int(regexp_substr(&quot;anomaly_id&quot;, '(\\d+)$'))), 3, '0')" name="short_id"/>
+    <field precision="0" typeName="" length="0" comment="" type="10" subType="0" expression="CASE WHEN &quot;depth_m&quot; * 100 IS NULL THEN 'not characterised' WHEN &quot;depth_sigma_m&quot; * 100 IS NULL THEN format_number(&quot;depth_m&quot; * 100, 1) || ' cm' ELSE format_number(&quot;depth_m&quot; * 100, 1) || ' ± ' || format_number(&quot;depth_sigma_m&quot; * 100, 1) || ' cm' END" name="depth"/>
+    <field precision="0" typeName="" length="0" comment="" type="10" subType="0" expression="CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 IS NULL THEN 'not characterised' WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 IS NULL THEN CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' mm²/s' ELSE CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' ± ' || CASE WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_sigma_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6))))) END || ' mm²/s' END" name="diffusivity"/>
+    <field precision="0" typeName="" length="0" comment="" type="10" subType="0" expression="CASE WHEN attribute('p_mine') IS NULL THEN 'not estimated' ELSE format_number(100 * attribute('p_mine'), 0) || ' %' END" name="likelihood"/>
+    <field precision="0" typeName="" length="0" comment="" type="10" subType="0" expression="CASE WHEN coalesce(attribute('cue_confidence'), attribute('confidence')) IS NULL THEN NULL ELSE format_number(100 * coalesce(attribute('cue_confidence'), attribute('confidence')), 0) || ' %' END" name="cue_confidence_pct"/>
+    <field precision="0" typeName="" length="0" comment="" type="10" subType="0" expression="'S-' || lpad(to_string(to_int(regexp_substr(&quot;anomaly_id&quot;, '(\\d+)$'))), 3, '0')" name="short_id"/>
+    <field precision="0" typeName="" length="0" comment="" type="10" subType="0" expression="CASE WHEN &quot;depth_m&quot; * 100 IS NULL THEN 'not characterised' WHEN &quot;depth_sigma_m&quot; * 100 IS NULL THEN format_number(&quot;depth_m&quot; * 100, 1) || ' cm' ELSE format_number(&quot;depth_m&quot; * 100, 1) || ' ± ' || format_number(&quot;depth_sigma_m&quot; * 100, 1) || ' cm' END" name="depth"/>
+    <field precision="0" typeName="" length="0" comment="" type="10" subType="0" expression="CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 IS NULL THEN 'not characterised' WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 IS NULL THEN CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' mm²/s' ELSE CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' ± ' || CASE WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_sigma_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6))))) END || ' mm²/s' END" name="diffusivity"/>
+    <field precision="0" typeName="" length="0" comment="" type="10" subType="0" expression="CASE WHEN attribute('p_mine') IS NULL THEN 'not estimated' ELSE format_number(100 * attribute('p_mine'), 0) || ' %' END" name="likelihood"/>
+    <field precision="0" typeName="" length="0" comment="" type="10" subType="0" expression="CASE WHEN coalesce(attribute('cue_confidence'), attribute('confidence')) IS NULL THEN NULL ELSE format_number(100 * coalesce(attribute('cue_confidence'), attribute('confidence')), 0) || ' %' END" name="cue_confidence_pct"/>
+    <field precision="0" typeName="" length="0" comment="" type="10" subType="0" expression="'S-' || lpad(to_string(to_int(regexp_substr(&quot;anomaly_id&quot;, '(\\d+)$'))), 3, '0')" name="short_id"/>
+    <field precision="0" typeName="" length="0" comment="" type="10" subType="0" expression="CASE WHEN &quot;depth_m&quot; * 100 IS NULL THEN 'not characterised' WHEN &quot;depth_sigma_m&quot; * 100 IS NULL THEN format_number(&quot;depth_m&quot; * 100, 1) || ' cm' ELSE format_number(&quot;depth_m&quot; * 100, 1) || ' ± ' || format_number(&quot;depth_sigma_m&quot; * 100, 1) || ' cm' END" name="depth"/>
+    <field precision="0" typeName="" length="0" comment="" type="10" subType="0" expression="CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 IS NULL THEN 'not characterised' WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 IS NULL THEN CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' mm²/s' ELSE CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' ± ' || CASE WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_sigma_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6))))) END || ' mm²/s' END" name="diffusivity"/>
+    <field precision="0" typeName="" length="0" comment="" type="10" subType="0" expression="CASE WHEN attribute('p_mine') IS NULL THEN 'not estimated' ELSE format_number(100 * attribute('p_mine'), 0) || ' %' END" name="likelihood"/>
+    <field precision="0" typeName="" length="0" comment="" type="10" subType="0" expression="CASE WHEN coalesce(attribute('cue_confidence'), attribute('confidence')) IS NULL THEN NULL ELSE format_number(100 * coalesce(attribute('cue_confidence'), attribute('confidence')), 0) || ' %' END" name="cue_confidence_pct"/>
+    <field precision="0" typeName="" length="0" comment="" type="10" subType="0" expression="'S-' || lpad(to_string(to_int(regexp_substr(&quot;anomaly_id&quot;, '(\\d+)$'))), 3, '0')" name="short_id"/>
+    <field precision="0" typeName="" length="0" comment="" type="10" subType="0" expression="CASE WHEN &quot;depth_m&quot; * 100 IS NULL THEN 'not characterised' WHEN &quot;depth_sigma_m&quot; * 100 IS NULL THEN format_number(&quot;depth_m&quot; * 100, 1) || ' cm' ELSE format_number(&quot;depth_m&quot; * 100, 1) || ' ± ' || format_number(&quot;depth_sigma_m&quot; * 100, 1) || ' cm' END" name="depth"/>
+    <field precision="0" typeName="" length="0" comment="" type="10" subType="0" expression="CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 IS NULL THEN 'not characterised' WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 IS NULL THEN CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' mm²/s' ELSE CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' ± ' || CASE WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_sigma_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6))))) END || ' mm²/s' END" name="diffusivity"/>
+    <field precision="0" typeName="" length="0" comment="" type="10" subType="0" expression="CASE WHEN attribute('p_mine') IS NULL THEN 'not estimated' ELSE format_number(100 * attribute('p_mine'), 0) || ' %' END" name="likelihood"/>
+    <field precision="0" typeName="" length="0" comment="" type="10" subType="0" expression="CASE WHEN coalesce(attribute('cue_confidence'), attribute('confidence')) IS NULL THEN NULL ELSE format_number(100 * coalesce(attribute('cue_confidence'), attribute('confidence')), 0) || ' %' END" name="cue_confidence_pct"/>
+    <field precision="0" typeName="" length="0" comment="" type="10" subType="0" expression="'S-' || lpad(to_string(to_int(regexp_substr(&quot;anomaly_id&quot;, '(\\d+)$'))), 3, '0')" name="short_id"/>
+    <field precision="0" typeName="" length="0" comment="" type="10" subType="0" expression="CASE WHEN &quot;depth_m&quot; * 100 IS NULL THEN 'not characterised' WHEN &quot;depth_sigma_m&quot; * 100 IS NULL THEN format_number(&quot;depth_m&quot; * 100, 1) || ' cm' ELSE format_number(&quot;depth_m&quot; * 100, 1) || ' ± ' || format_number(&quot;depth_sigma_m&quot; * 100, 1) || ' cm' END" name="depth"/>
+    <field precision="0" typeName="" length="0" comment="" type="10" subType="0" expression="CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 IS NULL THEN 'not characterised' WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 IS NULL THEN CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' mm²/s' ELSE CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' ± ' || CASE WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_sigma_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6))))) END || ' mm²/s' END" name="diffusivity"/>
+    <field precision="0" typeName="" length="0" comment="" type="10" subType="0" expression="CASE WHEN attribute('p_mine') IS NULL THEN 'not estimated' ELSE format_number(100 * attribute('p_mine'), 0) || ' %' END" name="likelihood"/>
+    <field precision="0" typeName="" length="0" comment="" type="10" subType="0" expression="CASE WHEN coalesce(attribute('cue_confidence'), attribute('confidence')) IS NULL THEN NULL ELSE format_number(100 * coalesce(attribute('cue_confidence'), attribute('confidence')), 0) || ' %' END" name="cue_confidence_pct"/>
   </expressionfields>
-  <attributetableconfig actionWidgetStyle="dropDown" sortExpression="coalesce(attribute('priority'), 1000000 * (CASE WHEN &quot;class_cue&quot; = 'at_mine' THEN 0 WHEN &quot;class_cue&quot; = 'ap_mine' THEN 1 WHEN &quot;class_cue&quot; = 'unknown' THEN 2 ELSE 3 END) - round(1000 * max(abs(&quot;contrast_day_k&quot;), abs(&quot;contrast_night_k&quot;))))" sortOrder="0">
+  <attributetableconfig actionWidgetStyle="dropDown" sortOrder="0" sortExpression="coalesce(attribute('priority'), 1000000 * (CASE WHEN &quot;class_cue&quot; = 'at_mine' THEN 0 WHEN &quot;class_cue&quot; = 'ap_mine' THEN 1 WHEN &quot;class_cue&quot; = 'unknown' THEN 2 ELSE 3 END) - round(1000 * max(abs(&quot;contrast_day_k&quot;), abs(&quot;contrast_night_k&quot;))))">
     <columns>
-      <column hidden="0" width="-1" name="anomaly_id" type="field"/>
-      <column hidden="0" width="-1" name="polarity" type="field"/>
-      <column hidden="0" width="-1" name="area_m2" type="field"/>
-      <column hidden="0" width="-1" name="p_mine" type="field"/>
-      <column hidden="0" width="-1" name="priority" type="field"/>
-      <column hidden="0" width="-1" name="cue_confidence" type="field"/>
-      <column hidden="0" width="-1" name="set_aside_reason" type="field"/>
-      <column hidden="0" width="-1" name="short_id" type="field"/>
-      <column hidden="0" width="-1" name="depth" type="field"/>
-      <column hidden="0" width="-1" name="diffusivity" type="field"/>
-      <column hidden="0" width="-1" name="likelihood" type="field"/>
-      <column hidden="0" width="-1" name="cue_confidence_pct" type="field"/>
+      <column hidden="0" width="-1" type="field" name="anomaly_id"/>
+      <column hidden="0" width="-1" type="field" name="polarity"/>
+      <column hidden="0" width="-1" type="field" name="area_m2"/>
+      <column hidden="0" width="-1" type="field" name="p_mine"/>
+      <column hidden="0" width="-1" type="field" name="priority"/>
+      <column hidden="0" width="-1" type="field" name="cue_confidence"/>
+      <column hidden="0" width="-1" type="field" name="set_aside_reason"/>
+      <column hidden="0" width="-1" type="field" name="short_id"/>
+      <column hidden="0" width="-1" type="field" name="depth"/>
+      <column hidden="0" width="-1" type="field" name="diffusivity"/>
+      <column hidden="0" width="-1" type="field" name="likelihood"/>
+      <column hidden="0" width="-1" type="field" name="cue_confidence_pct"/>
       <column hidden="1" width="-1" type="actions"/>
     </columns>
   </attributetableconfig>
@@ -646,57 +669,58 @@
   <featformsuppress>0</featformsuppress>
   <editorlayout>tablayout</editorlayout>
   <attributeEditorForm>
-    <attributeEditorContainer columnCount="1" visibilityExpression="" visibilityExpressionEnabled="0" groupBox="0" name="Suspect" showLabel="1">
-      <attributeEditorContainer columnCount="1" visibilityExpression="" visibilityExpressionEnabled="0" groupBox="1" name="Identification" showLabel="1">
-        <attributeEditorField name="short_id" index="26" showLabel="1"/>
-        <attributeEditorField name="anomaly_id" index="0" showLabel="1"/>
-        <attributeEditorField name="priority" index="17" showLabel="1"/>
-        <attributeEditorField name="class_cue" index="14" showLabel="1"/>
-        <attributeEditorField name="likelihood" index="29" showLabel="1"/>
-        <attributeEditorField name="cue_confidence_pct" index="30" showLabel="1"/>
-        <attributeEditorField name="status" index="12" showLabel="1"/>
-        <attributeEditorField name="polarity" index="13" showLabel="1"/>
-        <attributeEditorField name="set_aside_reason" index="18" showLabel="1"/>
+    <attributeEditorContainer columnCount="1" showLabel="1" groupBox="0" visibilityExpressionEnabled="0" name="Suspect" visibilityExpression="">
+      <attributeEditorContainer columnCount="1" showLabel="1" groupBox="1" visibilityExpressionEnabled="0" name="Identification" visibilityExpression="">
+        <attributeEditorField showLabel="1" index="27" name="short_id"/>
+        <attributeEditorField showLabel="1" index="0" name="anomaly_id"/>
+        <attributeEditorField showLabel="1" index="17" name="priority"/>
+        <attributeEditorField showLabel="1" index="14" name="class_cue"/>
+        <attributeEditorField showLabel="1" index="30" name="likelihood"/>
+        <attributeEditorField showLabel="1" index="31" name="cue_confidence_pct"/>
+        <attributeEditorField showLabel="1" index="12" name="status"/>
+        <attributeEditorField showLabel="1" index="13" name="polarity"/>
+        <attributeEditorField showLabel="1" index="18" name="set_aside_reason"/>
       </attributeEditorContainer>
-      <attributeEditorContainer columnCount="1" visibilityExpression="" visibilityExpressionEnabled="0" groupBox="1" name="Burial depth and soil" showLabel="1">
-        <attributeEditorField name="depth" index="27" showLabel="1"/>
-        <attributeEditorField name="diffusivity" index="28" showLabel="1"/>
+      <attributeEditorContainer columnCount="1" showLabel="1" groupBox="1" visibilityExpressionEnabled="0" name="Burial depth and soil" visibilityExpression="">
+        <attributeEditorField showLabel="1" index="28" name="depth"/>
+        <attributeEditorField showLabel="1" index="29" name="diffusivity"/>
       </attributeEditorContainer>
-      <attributeEditorContainer columnCount="1" visibilityExpression="" visibilityExpressionEnabled="0" groupBox="1" name="Thermal contrast" showLabel="1">
-        <attributeEditorField name="contrast_day_k" index="20" showLabel="1"/>
-        <attributeEditorField name="contrast_night_k" index="21" showLabel="1"/>
-        <attributeEditorField name="mine_curve_r" index="22" showLabel="1"/>
-        <attributeEditorField name="n_scans" index="19" showLabel="1"/>
+      <attributeEditorContainer columnCount="1" showLabel="1" groupBox="1" visibilityExpressionEnabled="0" name="Thermal contrast" visibilityExpression="">
+        <attributeEditorField showLabel="1" index="20" name="contrast_day_k"/>
+        <attributeEditorField showLabel="1" index="21" name="contrast_night_k"/>
+        <attributeEditorField showLabel="1" index="22" name="mine_curve_r"/>
+        <attributeEditorField showLabel="1" index="23" name="mine_curve_level"/>
+        <attributeEditorField showLabel="1" index="19" name="n_scans"/>
       </attributeEditorContainer>
-      <attributeEditorContainer columnCount="1" visibilityExpression="" visibilityExpressionEnabled="0" groupBox="1" name="Shape" showLabel="1">
-        <attributeEditorField name="diameter_m" index="6" showLabel="1"/>
-        <attributeEditorField name="area_m2" index="5" showLabel="1"/>
-        <attributeEditorField name="circularity" index="7" showLabel="1"/>
-      </attributeEditorContainer>
-    </attributeEditorContainer>
-    <attributeEditorContainer columnCount="1" visibilityExpression="" visibilityExpressionEnabled="0" groupBox="0" name="Contrast curve" showLabel="1">
-      <attributeEditorContainer columnCount="1" visibilityExpression="" visibilityExpressionEnabled="0" groupBox="1" name="Contrast curve" showLabel="1">
-        <attributeEditorField name="figure" index="24" showLabel="1"/>
+      <attributeEditorContainer columnCount="1" showLabel="1" groupBox="1" visibilityExpressionEnabled="0" name="Shape" visibilityExpression="">
+        <attributeEditorField showLabel="1" index="6" name="diameter_m"/>
+        <attributeEditorField showLabel="1" index="5" name="area_m2"/>
+        <attributeEditorField showLabel="1" index="7" name="circularity"/>
       </attributeEditorContainer>
     </attributeEditorContainer>
-    <attributeEditorContainer columnCount="1" visibilityExpression="" visibilityExpressionEnabled="0" groupBox="0" name="Position" showLabel="1">
-      <attributeEditorContainer columnCount="1" visibilityExpression="" visibilityExpressionEnabled="0" groupBox="1" name="Position" showLabel="1">
-        <attributeEditorField name="x" index="1" showLabel="1"/>
-        <attributeEditorField name="y" index="2" showLabel="1"/>
-        <attributeEditorField name="lat" index="3" showLabel="1"/>
-        <attributeEditorField name="lon" index="4" showLabel="1"/>
-        <attributeEditorField name="fix_quality" index="23" showLabel="1"/>
+    <attributeEditorContainer columnCount="1" showLabel="1" groupBox="0" visibilityExpressionEnabled="0" name="Contrast curve" visibilityExpression="">
+      <attributeEditorContainer columnCount="1" showLabel="1" groupBox="1" visibilityExpressionEnabled="0" name="Contrast curve" visibilityExpression="">
+        <attributeEditorField showLabel="1" index="25" name="figure"/>
       </attributeEditorContainer>
     </attributeEditorContainer>
-    <attributeEditorContainer columnCount="1" visibilityExpression="" visibilityExpressionEnabled="0" groupBox="0" name="Stored values" showLabel="1">
-      <attributeEditorContainer columnCount="1" visibilityExpression="" visibilityExpressionEnabled="0" groupBox="1" name="Stored values" showLabel="1">
-        <attributeEditorField name="depth_m" index="8" showLabel="1"/>
-        <attributeEditorField name="depth_sigma_m" index="9" showLabel="1"/>
-        <attributeEditorField name="diffusivity_m2s" index="10" showLabel="1"/>
-        <attributeEditorField name="diffusivity_sigma_m2s" index="11" showLabel="1"/>
-        <attributeEditorField name="p_mine" index="16" showLabel="1"/>
-        <attributeEditorField name="cue_confidence" index="15" showLabel="1"/>
-        <attributeEditorField name="contrast_series" index="25" showLabel="1"/>
+    <attributeEditorContainer columnCount="1" showLabel="1" groupBox="0" visibilityExpressionEnabled="0" name="Position" visibilityExpression="">
+      <attributeEditorContainer columnCount="1" showLabel="1" groupBox="1" visibilityExpressionEnabled="0" name="Position" visibilityExpression="">
+        <attributeEditorField showLabel="1" index="1" name="x"/>
+        <attributeEditorField showLabel="1" index="2" name="y"/>
+        <attributeEditorField showLabel="1" index="3" name="lat"/>
+        <attributeEditorField showLabel="1" index="4" name="lon"/>
+        <attributeEditorField showLabel="1" index="24" name="fix_quality"/>
+      </attributeEditorContainer>
+    </attributeEditorContainer>
+    <attributeEditorContainer columnCount="1" showLabel="1" groupBox="0" visibilityExpressionEnabled="0" name="Stored values" visibilityExpression="">
+      <attributeEditorContainer columnCount="1" showLabel="1" groupBox="1" visibilityExpressionEnabled="0" name="Stored values" visibilityExpression="">
+        <attributeEditorField showLabel="1" index="8" name="depth_m"/>
+        <attributeEditorField showLabel="1" index="9" name="depth_sigma_m"/>
+        <attributeEditorField showLabel="1" index="10" name="diffusivity_m2s"/>
+        <attributeEditorField showLabel="1" index="11" name="diffusivity_sigma_m2s"/>
+        <attributeEditorField showLabel="1" index="16" name="p_mine"/>
+        <attributeEditorField showLabel="1" index="15" name="cue_confidence"/>
+        <attributeEditorField showLabel="1" index="26" name="contrast_series"/>
       </attributeEditorContainer>
     </attributeEditorContainer>
   </attributeEditorForm>

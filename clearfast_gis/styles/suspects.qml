@@ -1,43 +1,43 @@
 <!DOCTYPE qgis PUBLIC 'http://mrcc.com/qgis.dtd' 'SYSTEM'>
-<qgis minScale="100000000" simplifyDrawingTol="1" simplifyDrawingHints="1" simplifyLocal="1" hasScaleBasedVisibilityFlag="0" simplifyAlgorithm="0" simplifyMaxScale="1" symbologyReferenceScale="-1" styleCategories="Symbology|Labeling|Fields|Forms|MapTips|AttributeTable|Rendering" version="3.22.16-Białowieża" labelsEnabled="1" maxScale="0">
-  <renderer-v2 enableorderby="1" forceraster="0" symbollevels="0" type="RuleRenderer" referencescale="-1">
-    <rules key="{2603c6dc-797b-4438-aac6-94b8cced82ee}">
-      <rule symbol="0" key="{c4040aca-37e5-48e0-a9cc-a92aa947b2fa}" label="AT mine indication" filter="(coalesce(attribute('p_mine') >= 0.5, &quot;class_cue&quot; IN ('at_mine', 'ap_mine'))) AND &quot;class_cue&quot; = 'at_mine'"/>
-      <rule symbol="1" key="{e16ba31f-a6e0-43b4-84cf-f2f9f35adb00}" label="AP mine indication" filter="(coalesce(attribute('p_mine') >= 0.5, &quot;class_cue&quot; IN ('at_mine', 'ap_mine'))) AND &quot;class_cue&quot; = 'ap_mine'"/>
-      <rule symbol="2" key="{51a5b668-67de-49bf-8e4d-200c415a84ac}" label="Mine indication, other cue" filter="(coalesce(attribute('p_mine') >= 0.5, &quot;class_cue&quot; IN ('at_mine', 'ap_mine'))) AND coalesce(&quot;class_cue&quot; NOT IN ('at_mine', 'ap_mine'), true)"/>
-      <rule symbol="3" key="{14e56fcf-5db2-4a82-8730-f0962a764859}" label="Other suspect" filter="NOT (coalesce(attribute('p_mine') >= 0.5, &quot;class_cue&quot; IN ('at_mine', 'ap_mine'))) AND coalesce(&quot;class_cue&quot; &lt;> 'clutter', true)"/>
-      <rule symbol="4" key="{93b1fc15-e4f9-49bf-b870-04d88f425593}" label="Clutter" checkstate="0" filter="NOT (coalesce(attribute('p_mine') >= 0.5, &quot;class_cue&quot; IN ('at_mine', 'ap_mine'))) AND &quot;class_cue&quot; = 'clutter'"/>
+<qgis styleCategories="Symbology|Labeling|Fields|Forms|MapTips|AttributeTable|Rendering" simplifyAlgorithm="0" simplifyLocal="1" version="3.22.16-Białowieża" minScale="100000000" simplifyDrawingHints="1" labelsEnabled="1" hasScaleBasedVisibilityFlag="0" maxScale="0" symbologyReferenceScale="-1" simplifyDrawingTol="1" simplifyMaxScale="1">
+  <renderer-v2 referencescale="-1" enableorderby="1" type="RuleRenderer" forceraster="0" symbollevels="0">
+    <rules key="{b3332ffe-1d0d-455c-aff3-28b771d8a9c1}">
+      <rule key="{4e978aa3-f825-41a3-ba25-bcef77e44dd2}" label="AT mine indication" symbol="0" filter="(coalesce(attribute('p_mine') >= 0.5, &quot;class_cue&quot; IN ('at_mine', 'ap_mine'))) AND &quot;class_cue&quot; = 'at_mine'"/>
+      <rule key="{9cefae6f-6779-4258-b916-a4ce73c9ddff}" label="AP mine indication" symbol="1" filter="(coalesce(attribute('p_mine') >= 0.5, &quot;class_cue&quot; IN ('at_mine', 'ap_mine'))) AND &quot;class_cue&quot; = 'ap_mine'"/>
+      <rule key="{8aff5371-e8ed-4b4b-b322-bf85429b63df}" label="Mine indication, other cue" symbol="2" filter="(coalesce(attribute('p_mine') >= 0.5, &quot;class_cue&quot; IN ('at_mine', 'ap_mine'))) AND coalesce(&quot;class_cue&quot; NOT IN ('at_mine', 'ap_mine'), true)"/>
+      <rule key="{96917c81-33f4-48e4-b1d9-706aaa29404d}" label="Other suspect" symbol="3" filter="NOT (coalesce(attribute('p_mine') >= 0.5, &quot;class_cue&quot; IN ('at_mine', 'ap_mine'))) AND coalesce(&quot;class_cue&quot; &lt;> 'clutter', true)"/>
+      <rule checkstate="0" key="{d654dd4f-cdb7-44cd-a15c-db9a69a4042b}" label="Clutter" symbol="4" filter="NOT (coalesce(attribute('p_mine') >= 0.5, &quot;class_cue&quot; IN ('at_mine', 'ap_mine'))) AND &quot;class_cue&quot; = 'clutter'"/>
     </rules>
     <symbols>
-      <symbol force_rhr="0" alpha="1" clip_to_extent="1" name="0" type="marker">
+      <symbol type="marker" force_rhr="0" clip_to_extent="1" name="0" alpha="1">
         <data_defined_properties>
           <Option type="Map">
-            <Option value="" name="name" type="QString"/>
+            <Option type="QString" name="name" value=""/>
             <Option name="properties"/>
-            <Option value="collection" name="type" type="QString"/>
+            <Option type="QString" name="type" value="collection"/>
           </Option>
         </data_defined_properties>
-        <layer pass="0" locked="0" class="SimpleMarker" enabled="1">
+        <layer enabled="1" class="SimpleMarker" locked="0" pass="0">
           <Option type="Map">
-            <Option value="0" name="angle" type="QString"/>
-            <Option value="square" name="cap_style" type="QString"/>
-            <Option value="227,26,28,255" name="color" type="QString"/>
-            <Option value="1" name="horizontal_anchor_point" type="QString"/>
-            <Option value="bevel" name="joinstyle" type="QString"/>
-            <Option value="triangle" name="name" type="QString"/>
-            <Option value="0,0" name="offset" type="QString"/>
-            <Option value="3x:0,0,0,0,0,0" name="offset_map_unit_scale" type="QString"/>
-            <Option value="MM" name="offset_unit" type="QString"/>
-            <Option value="35,35,35,255" name="outline_color" type="QString"/>
-            <Option value="solid" name="outline_style" type="QString"/>
-            <Option value="0.3" name="outline_width" type="QString"/>
-            <Option value="3x:0,0,0,0,0,0" name="outline_width_map_unit_scale" type="QString"/>
-            <Option value="MM" name="outline_width_unit" type="QString"/>
-            <Option value="diameter" name="scale_method" type="QString"/>
-            <Option value="5" name="size" type="QString"/>
-            <Option value="3x:0,0,0,0,0,0" name="size_map_unit_scale" type="QString"/>
-            <Option value="MM" name="size_unit" type="QString"/>
-            <Option value="1" name="vertical_anchor_point" type="QString"/>
+            <Option type="QString" name="angle" value="0"/>
+            <Option type="QString" name="cap_style" value="square"/>
+            <Option type="QString" name="color" value="227,26,28,255"/>
+            <Option type="QString" name="horizontal_anchor_point" value="1"/>
+            <Option type="QString" name="joinstyle" value="bevel"/>
+            <Option type="QString" name="name" value="triangle"/>
+            <Option type="QString" name="offset" value="0,0"/>
+            <Option type="QString" name="offset_map_unit_scale" value="3x:0,0,0,0,0,0"/>
+            <Option type="QString" name="offset_unit" value="MM"/>
+            <Option type="QString" name="outline_color" value="35,35,35,255"/>
+            <Option type="QString" name="outline_style" value="solid"/>
+            <Option type="QString" name="outline_width" value="0.3"/>
+            <Option type="QString" name="outline_width_map_unit_scale" value="3x:0,0,0,0,0,0"/>
+            <Option type="QString" name="outline_width_unit" value="MM"/>
+            <Option type="QString" name="scale_method" value="diameter"/>
+            <Option type="QString" name="size" value="5"/>
+            <Option type="QString" name="size_map_unit_scale" value="3x:0,0,0,0,0,0"/>
+            <Option type="QString" name="size_unit" value="MM"/>
+            <Option type="QString" name="vertical_anchor_point" value="1"/>
           </Option>
           <prop v="0" k="angle"/>
           <prop v="square" k="cap_style"/>
@@ -60,42 +60,42 @@
           <prop v="1" k="vertical_anchor_point"/>
           <data_defined_properties>
             <Option type="Map">
-              <Option value="" name="name" type="QString"/>
+              <Option type="QString" name="name" value=""/>
               <Option name="properties"/>
-              <Option value="collection" name="type" type="QString"/>
+              <Option type="QString" name="type" value="collection"/>
             </Option>
           </data_defined_properties>
         </layer>
       </symbol>
-      <symbol force_rhr="0" alpha="1" clip_to_extent="1" name="1" type="marker">
+      <symbol type="marker" force_rhr="0" clip_to_extent="1" name="1" alpha="1">
         <data_defined_properties>
           <Option type="Map">
-            <Option value="" name="name" type="QString"/>
+            <Option type="QString" name="name" value=""/>
             <Option name="properties"/>
-            <Option value="collection" name="type" type="QString"/>
+            <Option type="QString" name="type" value="collection"/>
           </Option>
         </data_defined_properties>
-        <layer pass="0" locked="0" class="SimpleMarker" enabled="1">
+        <layer enabled="1" class="SimpleMarker" locked="0" pass="0">
           <Option type="Map">
-            <Option value="0" name="angle" type="QString"/>
-            <Option value="square" name="cap_style" type="QString"/>
-            <Option value="227,26,28,255" name="color" type="QString"/>
-            <Option value="1" name="horizontal_anchor_point" type="QString"/>
-            <Option value="bevel" name="joinstyle" type="QString"/>
-            <Option value="triangle" name="name" type="QString"/>
-            <Option value="0,0" name="offset" type="QString"/>
-            <Option value="3x:0,0,0,0,0,0" name="offset_map_unit_scale" type="QString"/>
-            <Option value="MM" name="offset_unit" type="QString"/>
-            <Option value="35,35,35,255" name="outline_color" type="QString"/>
-            <Option value="solid" name="outline_style" type="QString"/>
-            <Option value="0.3" name="outline_width" type="QString"/>
-            <Option value="3x:0,0,0,0,0,0" name="outline_width_map_unit_scale" type="QString"/>
-            <Option value="MM" name="outline_width_unit" type="QString"/>
-            <Option value="diameter" name="scale_method" type="QString"/>
-            <Option value="4" name="size" type="QString"/>
-            <Option value="3x:0,0,0,0,0,0" name="size_map_unit_scale" type="QString"/>
-            <Option value="MM" name="size_unit" type="QString"/>
-            <Option value="1" name="vertical_anchor_point" type="QString"/>
+            <Option type="QString" name="angle" value="0"/>
+            <Option type="QString" name="cap_style" value="square"/>
+            <Option type="QString" name="color" value="227,26,28,255"/>
+            <Option type="QString" name="horizontal_anchor_point" value="1"/>
+            <Option type="QString" name="joinstyle" value="bevel"/>
+            <Option type="QString" name="name" value="triangle"/>
+            <Option type="QString" name="offset" value="0,0"/>
+            <Option type="QString" name="offset_map_unit_scale" value="3x:0,0,0,0,0,0"/>
+            <Option type="QString" name="offset_unit" value="MM"/>
+            <Option type="QString" name="outline_color" value="35,35,35,255"/>
+            <Option type="QString" name="outline_style" value="solid"/>
+            <Option type="QString" name="outline_width" value="0.3"/>
+            <Option type="QString" name="outline_width_map_unit_scale" value="3x:0,0,0,0,0,0"/>
+            <Option type="QString" name="outline_width_unit" value="MM"/>
+            <Option type="QString" name="scale_method" value="diameter"/>
+            <Option type="QString" name="size" value="4"/>
+            <Option type="QString" name="size_map_unit_scale" value="3x:0,0,0,0,0,0"/>
+            <Option type="QString" name="size_unit" value="MM"/>
+            <Option type="QString" name="vertical_anchor_point" value="1"/>
           </Option>
           <prop v="0" k="angle"/>
           <prop v="square" k="cap_style"/>
@@ -118,42 +118,42 @@
           <prop v="1" k="vertical_anchor_point"/>
           <data_defined_properties>
             <Option type="Map">
-              <Option value="" name="name" type="QString"/>
+              <Option type="QString" name="name" value=""/>
               <Option name="properties"/>
-              <Option value="collection" name="type" type="QString"/>
+              <Option type="QString" name="type" value="collection"/>
             </Option>
           </data_defined_properties>
         </layer>
       </symbol>
-      <symbol force_rhr="0" alpha="1" clip_to_extent="1" name="2" type="marker">
+      <symbol type="marker" force_rhr="0" clip_to_extent="1" name="2" alpha="1">
         <data_defined_properties>
           <Option type="Map">
-            <Option value="" name="name" type="QString"/>
+            <Option type="QString" name="name" value=""/>
             <Option name="properties"/>
-            <Option value="collection" name="type" type="QString"/>
+            <Option type="QString" name="type" value="collection"/>
           </Option>
         </data_defined_properties>
-        <layer pass="0" locked="0" class="SimpleMarker" enabled="1">
+        <layer enabled="1" class="SimpleMarker" locked="0" pass="0">
           <Option type="Map">
-            <Option value="0" name="angle" type="QString"/>
-            <Option value="square" name="cap_style" type="QString"/>
-            <Option value="227,26,28,255" name="color" type="QString"/>
-            <Option value="1" name="horizontal_anchor_point" type="QString"/>
-            <Option value="bevel" name="joinstyle" type="QString"/>
-            <Option value="circle" name="name" type="QString"/>
-            <Option value="0,0" name="offset" type="QString"/>
-            <Option value="3x:0,0,0,0,0,0" name="offset_map_unit_scale" type="QString"/>
-            <Option value="MM" name="offset_unit" type="QString"/>
-            <Option value="35,35,35,255" name="outline_color" type="QString"/>
-            <Option value="solid" name="outline_style" type="QString"/>
-            <Option value="0.3" name="outline_width" type="QString"/>
-            <Option value="3x:0,0,0,0,0,0" name="outline_width_map_unit_scale" type="QString"/>
-            <Option value="MM" name="outline_width_unit" type="QString"/>
-            <Option value="diameter" name="scale_method" type="QString"/>
-            <Option value="3.2" name="size" type="QString"/>
-            <Option value="3x:0,0,0,0,0,0" name="size_map_unit_scale" type="QString"/>
-            <Option value="MM" name="size_unit" type="QString"/>
-            <Option value="1" name="vertical_anchor_point" type="QString"/>
+            <Option type="QString" name="angle" value="0"/>
+            <Option type="QString" name="cap_style" value="square"/>
+            <Option type="QString" name="color" value="227,26,28,255"/>
+            <Option type="QString" name="horizontal_anchor_point" value="1"/>
+            <Option type="QString" name="joinstyle" value="bevel"/>
+            <Option type="QString" name="name" value="circle"/>
+            <Option type="QString" name="offset" value="0,0"/>
+            <Option type="QString" name="offset_map_unit_scale" value="3x:0,0,0,0,0,0"/>
+            <Option type="QString" name="offset_unit" value="MM"/>
+            <Option type="QString" name="outline_color" value="35,35,35,255"/>
+            <Option type="QString" name="outline_style" value="solid"/>
+            <Option type="QString" name="outline_width" value="0.3"/>
+            <Option type="QString" name="outline_width_map_unit_scale" value="3x:0,0,0,0,0,0"/>
+            <Option type="QString" name="outline_width_unit" value="MM"/>
+            <Option type="QString" name="scale_method" value="diameter"/>
+            <Option type="QString" name="size" value="3.2"/>
+            <Option type="QString" name="size_map_unit_scale" value="3x:0,0,0,0,0,0"/>
+            <Option type="QString" name="size_unit" value="MM"/>
+            <Option type="QString" name="vertical_anchor_point" value="1"/>
           </Option>
           <prop v="0" k="angle"/>
           <prop v="square" k="cap_style"/>
@@ -176,42 +176,42 @@
           <prop v="1" k="vertical_anchor_point"/>
           <data_defined_properties>
             <Option type="Map">
-              <Option value="" name="name" type="QString"/>
+              <Option type="QString" name="name" value=""/>
               <Option name="properties"/>
-              <Option value="collection" name="type" type="QString"/>
+              <Option type="QString" name="type" value="collection"/>
             </Option>
           </data_defined_properties>
         </layer>
       </symbol>
-      <symbol force_rhr="0" alpha="0.6" clip_to_extent="1" name="3" type="marker">
+      <symbol type="marker" force_rhr="0" clip_to_extent="1" name="3" alpha="0.6">
         <data_defined_properties>
           <Option type="Map">
-            <Option value="" name="name" type="QString"/>
+            <Option type="QString" name="name" value=""/>
             <Option name="properties"/>
-            <Option value="collection" name="type" type="QString"/>
+            <Option type="QString" name="type" value="collection"/>
           </Option>
         </data_defined_properties>
-        <layer pass="0" locked="0" class="SimpleMarker" enabled="1">
+        <layer enabled="1" class="SimpleMarker" locked="0" pass="0">
           <Option type="Map">
-            <Option value="0" name="angle" type="QString"/>
-            <Option value="square" name="cap_style" type="QString"/>
-            <Option value="255,127,0,255" name="color" type="QString"/>
-            <Option value="1" name="horizontal_anchor_point" type="QString"/>
-            <Option value="bevel" name="joinstyle" type="QString"/>
-            <Option value="circle" name="name" type="QString"/>
-            <Option value="0,0" name="offset" type="QString"/>
-            <Option value="3x:0,0,0,0,0,0" name="offset_map_unit_scale" type="QString"/>
-            <Option value="MM" name="offset_unit" type="QString"/>
-            <Option value="90,90,90,255" name="outline_color" type="QString"/>
-            <Option value="solid" name="outline_style" type="QString"/>
-            <Option value="0.3" name="outline_width" type="QString"/>
-            <Option value="3x:0,0,0,0,0,0" name="outline_width_map_unit_scale" type="QString"/>
-            <Option value="MM" name="outline_width_unit" type="QString"/>
-            <Option value="diameter" name="scale_method" type="QString"/>
-            <Option value="2.4" name="size" type="QString"/>
-            <Option value="3x:0,0,0,0,0,0" name="size_map_unit_scale" type="QString"/>
-            <Option value="MM" name="size_unit" type="QString"/>
-            <Option value="1" name="vertical_anchor_point" type="QString"/>
+            <Option type="QString" name="angle" value="0"/>
+            <Option type="QString" name="cap_style" value="square"/>
+            <Option type="QString" name="color" value="255,127,0,255"/>
+            <Option type="QString" name="horizontal_anchor_point" value="1"/>
+            <Option type="QString" name="joinstyle" value="bevel"/>
+            <Option type="QString" name="name" value="circle"/>
+            <Option type="QString" name="offset" value="0,0"/>
+            <Option type="QString" name="offset_map_unit_scale" value="3x:0,0,0,0,0,0"/>
+            <Option type="QString" name="offset_unit" value="MM"/>
+            <Option type="QString" name="outline_color" value="90,90,90,255"/>
+            <Option type="QString" name="outline_style" value="solid"/>
+            <Option type="QString" name="outline_width" value="0.3"/>
+            <Option type="QString" name="outline_width_map_unit_scale" value="3x:0,0,0,0,0,0"/>
+            <Option type="QString" name="outline_width_unit" value="MM"/>
+            <Option type="QString" name="scale_method" value="diameter"/>
+            <Option type="QString" name="size" value="2.4"/>
+            <Option type="QString" name="size_map_unit_scale" value="3x:0,0,0,0,0,0"/>
+            <Option type="QString" name="size_unit" value="MM"/>
+            <Option type="QString" name="vertical_anchor_point" value="1"/>
           </Option>
           <prop v="0" k="angle"/>
           <prop v="square" k="cap_style"/>
@@ -234,42 +234,42 @@
           <prop v="1" k="vertical_anchor_point"/>
           <data_defined_properties>
             <Option type="Map">
-              <Option value="" name="name" type="QString"/>
+              <Option type="QString" name="name" value=""/>
               <Option name="properties"/>
-              <Option value="collection" name="type" type="QString"/>
+              <Option type="QString" name="type" value="collection"/>
             </Option>
           </data_defined_properties>
         </layer>
       </symbol>
-      <symbol force_rhr="0" alpha="0.6" clip_to_extent="1" name="4" type="marker">
+      <symbol type="marker" force_rhr="0" clip_to_extent="1" name="4" alpha="0.6">
         <data_defined_properties>
           <Option type="Map">
-            <Option value="" name="name" type="QString"/>
+            <Option type="QString" name="name" value=""/>
             <Option name="properties"/>
-            <Option value="collection" name="type" type="QString"/>
+            <Option type="QString" name="type" value="collection"/>
           </Option>
         </data_defined_properties>
-        <layer pass="0" locked="0" class="SimpleMarker" enabled="1">
+        <layer enabled="1" class="SimpleMarker" locked="0" pass="0">
           <Option type="Map">
-            <Option value="0" name="angle" type="QString"/>
-            <Option value="square" name="cap_style" type="QString"/>
-            <Option value="150,150,150,255" name="color" type="QString"/>
-            <Option value="1" name="horizontal_anchor_point" type="QString"/>
-            <Option value="bevel" name="joinstyle" type="QString"/>
-            <Option value="circle" name="name" type="QString"/>
-            <Option value="0,0" name="offset" type="QString"/>
-            <Option value="3x:0,0,0,0,0,0" name="offset_map_unit_scale" type="QString"/>
-            <Option value="MM" name="offset_unit" type="QString"/>
-            <Option value="90,90,90,255" name="outline_color" type="QString"/>
-            <Option value="solid" name="outline_style" type="QString"/>
-            <Option value="0.3" name="outline_width" type="QString"/>
-            <Option value="3x:0,0,0,0,0,0" name="outline_width_map_unit_scale" type="QString"/>
-            <Option value="MM" name="outline_width_unit" type="QString"/>
-            <Option value="diameter" name="scale_method" type="QString"/>
-            <Option value="2" name="size" type="QString"/>
-            <Option value="3x:0,0,0,0,0,0" name="size_map_unit_scale" type="QString"/>
-            <Option value="MM" name="size_unit" type="QString"/>
-            <Option value="1" name="vertical_anchor_point" type="QString"/>
+            <Option type="QString" name="angle" value="0"/>
+            <Option type="QString" name="cap_style" value="square"/>
+            <Option type="QString" name="color" value="150,150,150,255"/>
+            <Option type="QString" name="horizontal_anchor_point" value="1"/>
+            <Option type="QString" name="joinstyle" value="bevel"/>
+            <Option type="QString" name="name" value="circle"/>
+            <Option type="QString" name="offset" value="0,0"/>
+            <Option type="QString" name="offset_map_unit_scale" value="3x:0,0,0,0,0,0"/>
+            <Option type="QString" name="offset_unit" value="MM"/>
+            <Option type="QString" name="outline_color" value="90,90,90,255"/>
+            <Option type="QString" name="outline_style" value="solid"/>
+            <Option type="QString" name="outline_width" value="0.3"/>
+            <Option type="QString" name="outline_width_map_unit_scale" value="3x:0,0,0,0,0,0"/>
+            <Option type="QString" name="outline_width_unit" value="MM"/>
+            <Option type="QString" name="scale_method" value="diameter"/>
+            <Option type="QString" name="size" value="2"/>
+            <Option type="QString" name="size_map_unit_scale" value="3x:0,0,0,0,0,0"/>
+            <Option type="QString" name="size_unit" value="MM"/>
+            <Option type="QString" name="vertical_anchor_point" value="1"/>
           </Option>
           <prop v="0" k="angle"/>
           <prop v="square" k="cap_style"/>
@@ -292,9 +292,9 @@
           <prop v="1" k="vertical_anchor_point"/>
           <data_defined_properties>
             <Option type="Map">
-              <Option value="" name="name" type="QString"/>
+              <Option type="QString" name="name" value=""/>
               <Option name="properties"/>
-              <Option value="collection" name="type" type="QString"/>
+              <Option type="QString" name="type" value="collection"/>
             </Option>
           </data_defined_properties>
         </layer>
@@ -305,35 +305,35 @@
     </orderby>
   </renderer-v2>
   <labeling type="rule-based">
-    <rules key="{5489424d-11a2-4a89-bead-04b9cff78c01}">
-      <rule key="{888cbed8-5aba-42c0-bd5b-adeb8f7c82a6}" filter="coalesce(attribute('p_mine') >= 0.5, &quot;class_cue&quot; IN ('at_mine', 'ap_mine'))" description="Mine indications">
+    <rules key="{f7ca3a2c-dbc3-4c9a-bcf3-fef5b7bf00d3}">
+      <rule key="{94a021f4-b2ca-485a-bc5e-3c56570c7db7}" filter="coalesce(attribute('p_mine') >= 0.5, &quot;class_cue&quot; IN ('at_mine', 'ap_mine'))" description="Mine indications">
         <settings calloutType="simple">
-          <text-style fontUnderline="0" fontLetterSpacing="0" allowHtml="0" textOpacity="1" multilineHeight="1" isExpression="0" capitalization="0" fontStrikeout="0" blendMode="0" fontWeight="75" fontWordSpacing="0" fontItalic="0" useSubstitutions="0" fontSize="9" textColor="120,0,0,255" fontSizeUnit="Point" fontFamily="DejaVu Sans" textOrientation="horizontal" fieldName="short_id" fontSizeMapUnitScale="3x:0,0,0,0,0,0" namedStyle="" previewBkgrdColor="255,255,255,255" legendString="Aa" fontKerning="1">
+          <text-style capitalization="0" fontSize="9" fieldName="short_id" fontStrikeout="0" fontFamily="DejaVu Sans" fontItalic="0" textColor="120,0,0,255" isExpression="0" fontLetterSpacing="0" blendMode="0" previewBkgrdColor="255,255,255,255" fontSizeUnit="Point" allowHtml="0" fontWordSpacing="0" fontKerning="1" namedStyle="" textOrientation="horizontal" legendString="Aa" multilineHeight="1" fontUnderline="0" useSubstitutions="0" fontSizeMapUnitScale="3x:0,0,0,0,0,0" fontWeight="75" textOpacity="1">
             <families/>
-            <text-buffer bufferDraw="1" bufferSize="0.80000000000000004" bufferNoFill="1" bufferOpacity="1" bufferJoinStyle="128" bufferSizeUnits="MM" bufferSizeMapUnitScale="3x:0,0,0,0,0,0" bufferColor="255,255,255,255" bufferBlendMode="0"/>
-            <text-mask maskSizeUnits="MM" maskedSymbolLayers="" maskSizeMapUnitScale="3x:0,0,0,0,0,0" maskEnabled="0" maskType="0" maskJoinStyle="128" maskOpacity="1" maskSize="1.5"/>
-            <background shapeRotationType="0" shapeOffsetUnit="MM" shapeBorderColor="128,128,128,255" shapeOffsetX="0" shapeBorderWidth="0" shapeRadiiMapUnitScale="3x:0,0,0,0,0,0" shapeSizeY="0" shapeOffsetY="0" shapeFillColor="255,255,255,255" shapeJoinStyle="64" shapeRadiiX="0" shapeSizeUnit="MM" shapeBlendMode="0" shapeRadiiY="0" shapeSizeX="0" shapeBorderWidthMapUnitScale="3x:0,0,0,0,0,0" shapeType="0" shapeOffsetMapUnitScale="3x:0,0,0,0,0,0" shapeSizeMapUnitScale="3x:0,0,0,0,0,0" shapeSVGFile="" shapeRadiiUnit="MM" shapeRotation="0" shapeOpacity="1" shapeDraw="0" shapeSizeType="0" shapeBorderWidthUnit="MM">
-              <symbol force_rhr="0" alpha="1" clip_to_extent="1" name="fillSymbol" type="fill">
+            <text-buffer bufferOpacity="1" bufferColor="255,255,255,255" bufferJoinStyle="128" bufferBlendMode="0" bufferNoFill="1" bufferSizeMapUnitScale="3x:0,0,0,0,0,0" bufferDraw="1" bufferSize="0.80000000000000004" bufferSizeUnits="MM"/>
+            <text-mask maskJoinStyle="128" maskEnabled="0" maskSizeUnits="MM" maskSizeMapUnitScale="3x:0,0,0,0,0,0" maskType="0" maskOpacity="1" maskedSymbolLayers="" maskSize="1.5"/>
+            <background shapeSizeMapUnitScale="3x:0,0,0,0,0,0" shapeFillColor="255,255,255,255" shapeBlendMode="0" shapeSizeUnit="MM" shapeBorderWidthMapUnitScale="3x:0,0,0,0,0,0" shapeOpacity="1" shapeRadiiUnit="MM" shapeSizeY="0" shapeBorderWidthUnit="MM" shapeOffsetY="0" shapeBorderWidth="0" shapeOffsetMapUnitScale="3x:0,0,0,0,0,0" shapeBorderColor="128,128,128,255" shapeRotation="0" shapeDraw="0" shapeRotationType="0" shapeSizeX="0" shapeRadiiY="0" shapeType="0" shapeOffsetUnit="MM" shapeSizeType="0" shapeSVGFile="" shapeJoinStyle="64" shapeOffsetX="0" shapeRadiiX="0" shapeRadiiMapUnitScale="3x:0,0,0,0,0,0">
+              <symbol type="fill" force_rhr="0" clip_to_extent="1" name="fillSymbol" alpha="1">
                 <data_defined_properties>
                   <Option type="Map">
-                    <Option value="" name="name" type="QString"/>
+                    <Option type="QString" name="name" value=""/>
                     <Option name="properties"/>
-                    <Option value="collection" name="type" type="QString"/>
+                    <Option type="QString" name="type" value="collection"/>
                   </Option>
                 </data_defined_properties>
-                <layer pass="0" locked="0" class="SimpleFill" enabled="1">
+                <layer enabled="1" class="SimpleFill" locked="0" pass="0">
                   <Option type="Map">
-                    <Option value="3x:0,0,0,0,0,0" name="border_width_map_unit_scale" type="QString"/>
-                    <Option value="255,255,255,255" name="color" type="QString"/>
-                    <Option value="bevel" name="joinstyle" type="QString"/>
-                    <Option value="0,0" name="offset" type="QString"/>
-                    <Option value="3x:0,0,0,0,0,0" name="offset_map_unit_scale" type="QString"/>
-                    <Option value="MM" name="offset_unit" type="QString"/>
-                    <Option value="128,128,128,255" name="outline_color" type="QString"/>
-                    <Option value="no" name="outline_style" type="QString"/>
-                    <Option value="0" name="outline_width" type="QString"/>
-                    <Option value="MM" name="outline_width_unit" type="QString"/>
-                    <Option value="solid" name="style" type="QString"/>
+                    <Option type="QString" name="border_width_map_unit_scale" value="3x:0,0,0,0,0,0"/>
+                    <Option type="QString" name="color" value="255,255,255,255"/>
+                    <Option type="QString" name="joinstyle" value="bevel"/>
+                    <Option type="QString" name="offset" value="0,0"/>
+                    <Option type="QString" name="offset_map_unit_scale" value="3x:0,0,0,0,0,0"/>
+                    <Option type="QString" name="offset_unit" value="MM"/>
+                    <Option type="QString" name="outline_color" value="128,128,128,255"/>
+                    <Option type="QString" name="outline_style" value="no"/>
+                    <Option type="QString" name="outline_width" value="0"/>
+                    <Option type="QString" name="outline_width_unit" value="MM"/>
+                    <Option type="QString" name="style" value="solid"/>
                   </Option>
                   <prop v="3x:0,0,0,0,0,0" k="border_width_map_unit_scale"/>
                   <prop v="255,255,255,255" k="color"/>
@@ -348,56 +348,56 @@
                   <prop v="solid" k="style"/>
                   <data_defined_properties>
                     <Option type="Map">
-                      <Option value="" name="name" type="QString"/>
+                      <Option type="QString" name="name" value=""/>
                       <Option name="properties"/>
-                      <Option value="collection" name="type" type="QString"/>
+                      <Option type="QString" name="type" value="collection"/>
                     </Option>
                   </data_defined_properties>
                 </layer>
               </symbol>
             </background>
-            <shadow shadowDraw="0" shadowOffsetDist="1" shadowBlendMode="6" shadowUnder="0" shadowOffsetAngle="135" shadowOffsetUnit="MM" shadowColor="0,0,0,255" shadowOpacity="0.69999999999999996" shadowRadiusUnit="MM" shadowRadiusMapUnitScale="3x:0,0,0,0,0,0" shadowOffsetMapUnitScale="3x:0,0,0,0,0,0" shadowOffsetGlobal="1" shadowScale="100" shadowRadius="1.5" shadowRadiusAlphaOnly="0"/>
+            <shadow shadowOffsetMapUnitScale="3x:0,0,0,0,0,0" shadowRadius="1.5" shadowDraw="0" shadowOffsetDist="1" shadowRadiusAlphaOnly="0" shadowOffsetAngle="135" shadowOffsetUnit="MM" shadowColor="0,0,0,255" shadowUnder="0" shadowOpacity="0.69999999999999996" shadowScale="100" shadowRadiusMapUnitScale="3x:0,0,0,0,0,0" shadowRadiusUnit="MM" shadowOffsetGlobal="1" shadowBlendMode="6"/>
             <dd_properties>
               <Option type="Map">
-                <Option value="" name="name" type="QString"/>
+                <Option type="QString" name="name" value=""/>
                 <Option name="properties"/>
-                <Option value="collection" name="type" type="QString"/>
+                <Option type="QString" name="type" value="collection"/>
               </Option>
             </dd_properties>
             <substitutions/>
           </text-style>
-          <text-format useMaxLineLengthForAutoWrap="1" multilineAlign="3" formatNumbers="0" decimals="3" plussign="0" autoWrapLength="0" rightDirectionSymbol=">" leftDirectionSymbol="&lt;" wrapChar="" addDirectionSymbol="0" reverseDirectionSymbol="0" placeDirectionSymbol="0"/>
-          <placement labelOffsetMapUnitScale="3x:0,0,0,0,0,0" placement="6" xOffset="0" priority="9" lineAnchorPercent="0.5" lineAnchorType="0" repeatDistanceUnits="MM" placementFlags="10" distUnits="MM" fitInPolygonOnly="0" overrunDistance="0" offsetUnits="MM" offsetType="0" yOffset="0" repeatDistanceMapUnitScale="3x:0,0,0,0,0,0" centroidInside="0" quadOffset="4" preserveRotation="1" geometryGenerator="" rotationAngle="0" maxCurvedCharAngleIn="25" maxCurvedCharAngleOut="-25" distMapUnitScale="3x:0,0,0,0,0,0" centroidWhole="0" predefinedPositionOrder="TR,TL,BR,BL,R,L,TSR,BSR" dist="1" overrunDistanceUnit="MM" geometryGeneratorEnabled="0" geometryGeneratorType="PointGeometry" layerType="UnknownGeometry" polygonPlacementFlags="2" overrunDistanceMapUnitScale="3x:0,0,0,0,0,0" rotationUnit="AngleDegrees" lineAnchorClipping="0" repeatDistance="0"/>
-          <rendering maxNumLabels="2000" upsidedownLabels="0" scaleVisibility="0" obstacle="1" fontLimitPixelSize="0" limitNumLabels="0" displayAll="0" minFeatureSize="0" drawLabels="1" scaleMin="0" fontMaxPixelSize="10000" obstacleType="1" zIndex="0" mergeLines="0" scaleMax="0" unplacedVisibility="0" labelPerPart="0" fontMinPixelSize="0" obstacleFactor="1"/>
+          <text-format autoWrapLength="0" formatNumbers="0" decimals="3" addDirectionSymbol="0" placeDirectionSymbol="0" rightDirectionSymbol=">" reverseDirectionSymbol="0" leftDirectionSymbol="&lt;" wrapChar="" multilineAlign="3" useMaxLineLengthForAutoWrap="1" plussign="0"/>
+          <placement rotationAngle="0" overrunDistance="0" fitInPolygonOnly="0" placement="6" predefinedPositionOrder="TR,TL,BR,BL,R,L,TSR,BSR" maxCurvedCharAngleOut="-25" geometryGeneratorEnabled="0" dist="1" repeatDistanceUnits="MM" yOffset="0" geometryGenerator="" polygonPlacementFlags="2" distMapUnitScale="3x:0,0,0,0,0,0" lineAnchorType="0" offsetType="0" distUnits="MM" rotationUnit="AngleDegrees" repeatDistanceMapUnitScale="3x:0,0,0,0,0,0" priority="9" centroidInside="0" repeatDistance="0" geometryGeneratorType="PointGeometry" offsetUnits="MM" maxCurvedCharAngleIn="25" quadOffset="4" centroidWhole="0" xOffset="0" overrunDistanceUnit="MM" lineAnchorPercent="0.5" lineAnchorClipping="0" preserveRotation="1" labelOffsetMapUnitScale="3x:0,0,0,0,0,0" overrunDistanceMapUnitScale="3x:0,0,0,0,0,0" placementFlags="10" layerType="UnknownGeometry"/>
+          <rendering minFeatureSize="0" fontMaxPixelSize="10000" scaleMin="0" obstacle="1" limitNumLabels="0" fontLimitPixelSize="0" drawLabels="1" labelPerPart="0" maxNumLabels="2000" zIndex="0" unplacedVisibility="0" obstacleFactor="1" displayAll="0" mergeLines="0" fontMinPixelSize="0" scaleMax="0" upsidedownLabels="0" scaleVisibility="0" obstacleType="1"/>
           <dd_properties>
             <Option type="Map">
-              <Option value="" name="name" type="QString"/>
+              <Option type="QString" name="name" value=""/>
               <Option name="properties"/>
-              <Option value="collection" name="type" type="QString"/>
+              <Option type="QString" name="type" value="collection"/>
             </Option>
           </dd_properties>
           <callout type="simple">
             <Option type="Map">
-              <Option value="pole_of_inaccessibility" name="anchorPoint" type="QString"/>
-              <Option value="0" name="blendMode" type="int"/>
-              <Option name="ddProperties" type="Map">
-                <Option value="" name="name" type="QString"/>
+              <Option type="QString" name="anchorPoint" value="pole_of_inaccessibility"/>
+              <Option type="int" name="blendMode" value="0"/>
+              <Option type="Map" name="ddProperties">
+                <Option type="QString" name="name" value=""/>
                 <Option name="properties"/>
-                <Option value="collection" name="type" type="QString"/>
+                <Option type="QString" name="type" value="collection"/>
               </Option>
-              <Option value="false" name="drawToAllParts" type="bool"/>
-              <Option value="0" name="enabled" type="QString"/>
-              <Option value="point_on_exterior" name="labelAnchorPoint" type="QString"/>
-              <Option value="&lt;symbol force_rhr=&quot;0&quot; alpha=&quot;1&quot; clip_to_extent=&quot;1&quot; name=&quot;symbol&quot; type=&quot;line&quot;>&lt;data_defined_properties>&lt;Option type=&quot;Map&quot;>&lt;Option value=&quot;&quot; name=&quot;name&quot; type=&quot;QString&quot;/>&lt;Option name=&quot;properties&quot;/>&lt;Option value=&quot;collection&quot; name=&quot;type&quot; type=&quot;QString&quot;/>&lt;/Option>&lt;/data_defined_properties>&lt;layer pass=&quot;0&quot; locked=&quot;0&quot; class=&quot;SimpleLine&quot; enabled=&quot;1&quot;>&lt;Option type=&quot;Map&quot;>&lt;Option value=&quot;0&quot; name=&quot;align_dash_pattern&quot; type=&quot;QString&quot;/>&lt;Option value=&quot;square&quot; name=&quot;capstyle&quot; type=&quot;QString&quot;/>&lt;Option value=&quot;5;2&quot; name=&quot;customdash&quot; type=&quot;QString&quot;/>&lt;Option value=&quot;3x:0,0,0,0,0,0&quot; name=&quot;customdash_map_unit_scale&quot; type=&quot;QString&quot;/>&lt;Option value=&quot;MM&quot; name=&quot;customdash_unit&quot; type=&quot;QString&quot;/>&lt;Option value=&quot;0&quot; name=&quot;dash_pattern_offset&quot; type=&quot;QString&quot;/>&lt;Option value=&quot;3x:0,0,0,0,0,0&quot; name=&quot;dash_pattern_offset_map_unit_scale&quot; type=&quot;QString&quot;/>&lt;Option value=&quot;MM&quot; name=&quot;dash_pattern_offset_unit&quot; type=&quot;QString&quot;/>&lt;Option value=&quot;0&quot; name=&quot;draw_inside_polygon&quot; type=&quot;QString&quot;/>&lt;Option value=&quot;bevel&quot; name=&quot;joinstyle&quot; type=&quot;QString&quot;/>&lt;Option value=&quot;60,60,60,255&quot; name=&quot;line_color&quot; type=&quot;QString&quot;/>&lt;Option value=&quot;solid&quot; name=&quot;line_style&quot; type=&quot;QString&quot;/>&lt;Option value=&quot;0.3&quot; name=&quot;line_width&quot; type=&quot;QString&quot;/>&lt;Option value=&quot;MM&quot; name=&quot;line_width_unit&quot; type=&quot;QString&quot;/>&lt;Option value=&quot;0&quot; name=&quot;offset&quot; type=&quot;QString&quot;/>&lt;Option value=&quot;3x:0,0,0,0,0,0&quot; name=&quot;offset_map_unit_scale&quot; type=&quot;QString&quot;/>&lt;Option value=&quot;MM&quot; name=&quot;offset_unit&quot; type=&quot;QString&quot;/>&lt;Option value=&quot;0&quot; name=&quot;ring_filter&quot; type=&quot;QString&quot;/>&lt;Option value=&quot;0&quot; name=&quot;trim_distance_end&quot; type=&quot;QString&quot;/>&lt;Option value=&quot;3x:0,0,0,0,0,0&quot; name=&quot;trim_distance_end_map_unit_scale&quot; type=&quot;QString&quot;/>&lt;Option value=&quot;MM&quot; name=&quot;trim_distance_end_unit&quot; type=&quot;QString&quot;/>&lt;Option value=&quot;0&quot; name=&quot;trim_distance_start&quot; type=&quot;QString&quot;/>&lt;Option value=&quot;3x:0,0,0,0,0,0&quot; name=&quot;trim_distance_start_map_unit_scale&quot; type=&quot;QString&quot;/>&lt;Option value=&quot;MM&quot; name=&quot;trim_distance_start_unit&quot; type=&quot;QString&quot;/>&lt;Option value=&quot;0&quot; name=&quot;tweak_dash_pattern_on_corners&quot; type=&quot;QString&quot;/>&lt;Option value=&quot;0&quot; name=&quot;use_custom_dash&quot; type=&quot;QString&quot;/>&lt;Option value=&quot;3x:0,0,0,0,0,0&quot; name=&quot;width_map_unit_scale&quot; type=&quot;QString&quot;/>&lt;/Option>&lt;prop v=&quot;0&quot; k=&quot;align_dash_pattern&quot;/>&lt;prop v=&quot;square&quot; k=&quot;capstyle&quot;/>&lt;prop v=&quot;5;2&quot; k=&quot;customdash&quot;/>&lt;prop v=&quot;3x:0,0,0,0,0,0&quot; k=&quot;customdash_map_unit_scale&quot;/>&lt;prop v=&quot;MM&quot; k=&quot;customdash_unit&quot;/>&lt;prop v=&quot;0&quot; k=&quot;dash_pattern_offset&quot;/>&lt;prop v=&quot;3x:0,0,0,0,0,0&quot; k=&quot;dash_pattern_offset_map_unit_scale&quot;/>&lt;prop v=&quot;MM&quot; k=&quot;dash_pattern_offset_unit&quot;/>&lt;prop v=&quot;0&quot; k=&quot;draw_inside_polygon&quot;/>&lt;prop v=&quot;bevel&quot; k=&quot;joinstyle&quot;/>&lt;prop v=&quot;60,60,60,255&quot; k=&quot;line_color&quot;/>&lt;prop v=&quot;solid&quot; k=&quot;line_style&quot;/>&lt;prop v=&quot;0.3&quot; k=&quot;line_width&quot;/>&lt;prop v=&quot;MM&quot; k=&quot;line_width_unit&quot;/>&lt;prop v=&quot;0&quot; k=&quot;offset&quot;/>&lt;prop v=&quot;3x:0,0,0,0,0,0&quot; k=&quot;offset_map_unit_scale&quot;/>&lt;prop v=&quot;MM&quot; k=&quot;offset_unit&quot;/>&lt;prop v=&quot;0&quot; k=&quot;ring_filter&quot;/>&lt;prop v=&quot;0&quot; k=&quot;trim_distance_end&quot;/>&lt;prop v=&quot;3x:0,0,0,0,0,0&quot; k=&quot;trim_distance_end_map_unit_scale&quot;/>&lt;prop v=&quot;MM&quot; k=&quot;trim_distance_end_unit&quot;/>&lt;prop v=&quot;0&quot; k=&quot;trim_distance_start&quot;/>&lt;prop v=&quot;3x:0,0,0,0,0,0&quot; k=&quot;trim_distance_start_map_unit_scale&quot;/>&lt;prop v=&quot;MM&quot; k=&quot;trim_distance_start_unit&quot;/>&lt;prop v=&quot;0&quot; k=&quot;tweak_dash_pattern_on_corners&quot;/>&lt;prop v=&quot;0&quot; k=&quot;use_custom_dash&quot;/>&lt;prop v=&quot;3x:0,0,0,0,0,0&quot; k=&quot;width_map_unit_scale&quot;/>&lt;data_defined_properties>&lt;Option type=&quot;Map&quot;>&lt;Option value=&quot;&quot; name=&quot;name&quot; type=&quot;QString&quot;/>&lt;Option name=&quot;properties&quot;/>&lt;Option value=&quot;collection&quot; name=&quot;type&quot; type=&quot;QString&quot;/>&lt;/Option>&lt;/data_defined_properties>&lt;/layer>&lt;/symbol>" name="lineSymbol" type="QString"/>
-              <Option value="0" name="minLength" type="double"/>
-              <Option value="3x:0,0,0,0,0,0" name="minLengthMapUnitScale" type="QString"/>
-              <Option value="MM" name="minLengthUnit" type="QString"/>
-              <Option value="0" name="offsetFromAnchor" type="double"/>
-              <Option value="3x:0,0,0,0,0,0" name="offsetFromAnchorMapUnitScale" type="QString"/>
-              <Option value="MM" name="offsetFromAnchorUnit" type="QString"/>
-              <Option value="0" name="offsetFromLabel" type="double"/>
-              <Option value="3x:0,0,0,0,0,0" name="offsetFromLabelMapUnitScale" type="QString"/>
-              <Option value="MM" name="offsetFromLabelUnit" type="QString"/>
+              <Option type="bool" name="drawToAllParts" value="false"/>
+              <Option type="QString" name="enabled" value="0"/>
+              <Option type="QString" name="labelAnchorPoint" value="point_on_exterior"/>
+              <Option type="QString" name="lineSymbol" value="&lt;symbol type=&quot;line&quot; force_rhr=&quot;0&quot; clip_to_extent=&quot;1&quot; name=&quot;symbol&quot; alpha=&quot;1&quot;>&lt;data_defined_properties>&lt;Option type=&quot;Map&quot;>&lt;Option type=&quot;QString&quot; name=&quot;name&quot; value=&quot;&quot;/>&lt;Option name=&quot;properties&quot;/>&lt;Option type=&quot;QString&quot; name=&quot;type&quot; value=&quot;collection&quot;/>&lt;/Option>&lt;/data_defined_properties>&lt;layer enabled=&quot;1&quot; class=&quot;SimpleLine&quot; locked=&quot;0&quot; pass=&quot;0&quot;>&lt;Option type=&quot;Map&quot;>&lt;Option type=&quot;QString&quot; name=&quot;align_dash_pattern&quot; value=&quot;0&quot;/>&lt;Option type=&quot;QString&quot; name=&quot;capstyle&quot; value=&quot;square&quot;/>&lt;Option type=&quot;QString&quot; name=&quot;customdash&quot; value=&quot;5;2&quot;/>&lt;Option type=&quot;QString&quot; name=&quot;customdash_map_unit_scale&quot; value=&quot;3x:0,0,0,0,0,0&quot;/>&lt;Option type=&quot;QString&quot; name=&quot;customdash_unit&quot; value=&quot;MM&quot;/>&lt;Option type=&quot;QString&quot; name=&quot;dash_pattern_offset&quot; value=&quot;0&quot;/>&lt;Option type=&quot;QString&quot; name=&quot;dash_pattern_offset_map_unit_scale&quot; value=&quot;3x:0,0,0,0,0,0&quot;/>&lt;Option type=&quot;QString&quot; name=&quot;dash_pattern_offset_unit&quot; value=&quot;MM&quot;/>&lt;Option type=&quot;QString&quot; name=&quot;draw_inside_polygon&quot; value=&quot;0&quot;/>&lt;Option type=&quot;QString&quot; name=&quot;joinstyle&quot; value=&quot;bevel&quot;/>&lt;Option type=&quot;QString&quot; name=&quot;line_color&quot; value=&quot;60,60,60,255&quot;/>&lt;Option type=&quot;QString&quot; name=&quot;line_style&quot; value=&quot;solid&quot;/>&lt;Option type=&quot;QString&quot; name=&quot;line_width&quot; value=&quot;0.3&quot;/>&lt;Option type=&quot;QString&quot; name=&quot;line_width_unit&quot; value=&quot;MM&quot;/>&lt;Option type=&quot;QString&quot; name=&quot;offset&quot; value=&quot;0&quot;/>&lt;Option type=&quot;QString&quot; name=&quot;offset_map_unit_scale&quot; value=&quot;3x:0,0,0,0,0,0&quot;/>&lt;Option type=&quot;QString&quot; name=&quot;offset_unit&quot; value=&quot;MM&quot;/>&lt;Option type=&quot;QString&quot; name=&quot;ring_filter&quot; value=&quot;0&quot;/>&lt;Option type=&quot;QString&quot; name=&quot;trim_distance_end&quot; value=&quot;0&quot;/>&lt;Option type=&quot;QString&quot; name=&quot;trim_distance_end_map_unit_scale&quot; value=&quot;3x:0,0,0,0,0,0&quot;/>&lt;Option type=&quot;QString&quot; name=&quot;trim_distance_end_unit&quot; value=&quot;MM&quot;/>&lt;Option type=&quot;QString&quot; name=&quot;trim_distance_start&quot; value=&quot;0&quot;/>&lt;Option type=&quot;QString&quot; name=&quot;trim_distance_start_map_unit_scale&quot; value=&quot;3x:0,0,0,0,0,0&quot;/>&lt;Option type=&quot;QString&quot; name=&quot;trim_distance_start_unit&quot; value=&quot;MM&quot;/>&lt;Option type=&quot;QString&quot; name=&quot;tweak_dash_pattern_on_corners&quot; value=&quot;0&quot;/>&lt;Option type=&quot;QString&quot; name=&quot;use_custom_dash&quot; value=&quot;0&quot;/>&lt;Option type=&quot;QString&quot; name=&quot;width_map_unit_scale&quot; value=&quot;3x:0,0,0,0,0,0&quot;/>&lt;/Option>&lt;prop v=&quot;0&quot; k=&quot;align_dash_pattern&quot;/>&lt;prop v=&quot;square&quot; k=&quot;capstyle&quot;/>&lt;prop v=&quot;5;2&quot; k=&quot;customdash&quot;/>&lt;prop v=&quot;3x:0,0,0,0,0,0&quot; k=&quot;customdash_map_unit_scale&quot;/>&lt;prop v=&quot;MM&quot; k=&quot;customdash_unit&quot;/>&lt;prop v=&quot;0&quot; k=&quot;dash_pattern_offset&quot;/>&lt;prop v=&quot;3x:0,0,0,0,0,0&quot; k=&quot;dash_pattern_offset_map_unit_scale&quot;/>&lt;prop v=&quot;MM&quot; k=&quot;dash_pattern_offset_unit&quot;/>&lt;prop v=&quot;0&quot; k=&quot;draw_inside_polygon&quot;/>&lt;prop v=&quot;bevel&quot; k=&quot;joinstyle&quot;/>&lt;prop v=&quot;60,60,60,255&quot; k=&quot;line_color&quot;/>&lt;prop v=&quot;solid&quot; k=&quot;line_style&quot;/>&lt;prop v=&quot;0.3&quot; k=&quot;line_width&quot;/>&lt;prop v=&quot;MM&quot; k=&quot;line_width_unit&quot;/>&lt;prop v=&quot;0&quot; k=&quot;offset&quot;/>&lt;prop v=&quot;3x:0,0,0,0,0,0&quot; k=&quot;offset_map_unit_scale&quot;/>&lt;prop v=&quot;MM&quot; k=&quot;offset_unit&quot;/>&lt;prop v=&quot;0&quot; k=&quot;ring_filter&quot;/>&lt;prop v=&quot;0&quot; k=&quot;trim_distance_end&quot;/>&lt;prop v=&quot;3x:0,0,0,0,0,0&quot; k=&quot;trim_distance_end_map_unit_scale&quot;/>&lt;prop v=&quot;MM&quot; k=&quot;trim_distance_end_unit&quot;/>&lt;prop v=&quot;0&quot; k=&quot;trim_distance_start&quot;/>&lt;prop v=&quot;3x:0,0,0,0,0,0&quot; k=&quot;trim_distance_start_map_unit_scale&quot;/>&lt;prop v=&quot;MM&quot; k=&quot;trim_distance_start_unit&quot;/>&lt;prop v=&quot;0&quot; k=&quot;tweak_dash_pattern_on_corners&quot;/>&lt;prop v=&quot;0&quot; k=&quot;use_custom_dash&quot;/>&lt;prop v=&quot;3x:0,0,0,0,0,0&quot; k=&quot;width_map_unit_scale&quot;/>&lt;data_defined_properties>&lt;Option type=&quot;Map&quot;>&lt;Option type=&quot;QString&quot; name=&quot;name&quot; value=&quot;&quot;/>&lt;Option name=&quot;properties&quot;/>&lt;Option type=&quot;QString&quot; name=&quot;type&quot; value=&quot;collection&quot;/>&lt;/Option>&lt;/data_defined_properties>&lt;/layer>&lt;/symbol>"/>
+              <Option type="double" name="minLength" value="0"/>
+              <Option type="QString" name="minLengthMapUnitScale" value="3x:0,0,0,0,0,0"/>
+              <Option type="QString" name="minLengthUnit" value="MM"/>
+              <Option type="double" name="offsetFromAnchor" value="0"/>
+              <Option type="QString" name="offsetFromAnchorMapUnitScale" value="3x:0,0,0,0,0,0"/>
+              <Option type="QString" name="offsetFromAnchorUnit" value="MM"/>
+              <Option type="double" name="offsetFromLabel" value="0"/>
+              <Option type="QString" name="offsetFromLabelMapUnitScale" value="3x:0,0,0,0,0,0"/>
+              <Option type="QString" name="offsetFromLabelUnit" value="MM"/>
             </Option>
           </callout>
         </settings>
@@ -412,8 +412,8 @@
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option value="false" name="IsMultiline" type="bool"/>
-            <Option value="false" name="UseHtml" type="bool"/>
+            <Option type="bool" name="IsMultiline" value="false"/>
+            <Option type="bool" name="UseHtml" value="false"/>
           </Option>
         </config>
       </editWidget>
@@ -422,12 +422,12 @@
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option value="true" name="AllowNull" type="bool"/>
-            <Option value="1e+09" name="Max" type="double"/>
-            <Option value="-1e+09" name="Min" type="double"/>
-            <Option value="2" name="Precision" type="int"/>
-            <Option value="1" name="Step" type="int"/>
-            <Option value="SpinBox" name="Style" type="QString"/>
+            <Option type="bool" name="AllowNull" value="true"/>
+            <Option type="double" name="Max" value="1e+09"/>
+            <Option type="double" name="Min" value="-1e+09"/>
+            <Option type="int" name="Precision" value="2"/>
+            <Option type="int" name="Step" value="1"/>
+            <Option type="QString" name="Style" value="SpinBox"/>
           </Option>
         </config>
       </editWidget>
@@ -436,12 +436,12 @@
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option value="true" name="AllowNull" type="bool"/>
-            <Option value="1e+09" name="Max" type="double"/>
-            <Option value="-1e+09" name="Min" type="double"/>
-            <Option value="2" name="Precision" type="int"/>
-            <Option value="1" name="Step" type="int"/>
-            <Option value="SpinBox" name="Style" type="QString"/>
+            <Option type="bool" name="AllowNull" value="true"/>
+            <Option type="double" name="Max" value="1e+09"/>
+            <Option type="double" name="Min" value="-1e+09"/>
+            <Option type="int" name="Precision" value="2"/>
+            <Option type="int" name="Step" value="1"/>
+            <Option type="QString" name="Style" value="SpinBox"/>
           </Option>
         </config>
       </editWidget>
@@ -450,12 +450,12 @@
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option value="true" name="AllowNull" type="bool"/>
-            <Option value="1e+09" name="Max" type="double"/>
-            <Option value="-1e+09" name="Min" type="double"/>
-            <Option value="7" name="Precision" type="int"/>
-            <Option value="1" name="Step" type="int"/>
-            <Option value="SpinBox" name="Style" type="QString"/>
+            <Option type="bool" name="AllowNull" value="true"/>
+            <Option type="double" name="Max" value="1e+09"/>
+            <Option type="double" name="Min" value="-1e+09"/>
+            <Option type="int" name="Precision" value="7"/>
+            <Option type="int" name="Step" value="1"/>
+            <Option type="QString" name="Style" value="SpinBox"/>
           </Option>
         </config>
       </editWidget>
@@ -464,12 +464,12 @@
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option value="true" name="AllowNull" type="bool"/>
-            <Option value="1e+09" name="Max" type="double"/>
-            <Option value="-1e+09" name="Min" type="double"/>
-            <Option value="7" name="Precision" type="int"/>
-            <Option value="1" name="Step" type="int"/>
-            <Option value="SpinBox" name="Style" type="QString"/>
+            <Option type="bool" name="AllowNull" value="true"/>
+            <Option type="double" name="Max" value="1e+09"/>
+            <Option type="double" name="Min" value="-1e+09"/>
+            <Option type="int" name="Precision" value="7"/>
+            <Option type="int" name="Step" value="1"/>
+            <Option type="QString" name="Style" value="SpinBox"/>
           </Option>
         </config>
       </editWidget>
@@ -478,12 +478,12 @@
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option value="true" name="AllowNull" type="bool"/>
-            <Option value="1e+09" name="Max" type="double"/>
-            <Option value="-1e+09" name="Min" type="double"/>
-            <Option value="3" name="Precision" type="int"/>
-            <Option value="1" name="Step" type="int"/>
-            <Option value="SpinBox" name="Style" type="QString"/>
+            <Option type="bool" name="AllowNull" value="true"/>
+            <Option type="double" name="Max" value="1e+09"/>
+            <Option type="double" name="Min" value="-1e+09"/>
+            <Option type="int" name="Precision" value="3"/>
+            <Option type="int" name="Step" value="1"/>
+            <Option type="QString" name="Style" value="SpinBox"/>
           </Option>
         </config>
       </editWidget>
@@ -492,12 +492,12 @@
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option value="true" name="AllowNull" type="bool"/>
-            <Option value="1e+09" name="Max" type="double"/>
-            <Option value="-1e+09" name="Min" type="double"/>
-            <Option value="2" name="Precision" type="int"/>
-            <Option value="1" name="Step" type="int"/>
-            <Option value="SpinBox" name="Style" type="QString"/>
+            <Option type="bool" name="AllowNull" value="true"/>
+            <Option type="double" name="Max" value="1e+09"/>
+            <Option type="double" name="Min" value="-1e+09"/>
+            <Option type="int" name="Precision" value="2"/>
+            <Option type="int" name="Step" value="1"/>
+            <Option type="QString" name="Style" value="SpinBox"/>
           </Option>
         </config>
       </editWidget>
@@ -506,12 +506,12 @@
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option value="true" name="AllowNull" type="bool"/>
-            <Option value="1e+09" name="Max" type="double"/>
-            <Option value="-1e+09" name="Min" type="double"/>
-            <Option value="2" name="Precision" type="int"/>
-            <Option value="1" name="Step" type="int"/>
-            <Option value="SpinBox" name="Style" type="QString"/>
+            <Option type="bool" name="AllowNull" value="true"/>
+            <Option type="double" name="Max" value="1e+09"/>
+            <Option type="double" name="Min" value="-1e+09"/>
+            <Option type="int" name="Precision" value="2"/>
+            <Option type="int" name="Step" value="1"/>
+            <Option type="QString" name="Style" value="SpinBox"/>
           </Option>
         </config>
       </editWidget>
@@ -520,12 +520,12 @@
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option value="true" name="AllowNull" type="bool"/>
-            <Option value="1e+09" name="Max" type="double"/>
-            <Option value="-1e+09" name="Min" type="double"/>
-            <Option value="3" name="Precision" type="int"/>
-            <Option value="1" name="Step" type="int"/>
-            <Option value="SpinBox" name="Style" type="QString"/>
+            <Option type="bool" name="AllowNull" value="true"/>
+            <Option type="double" name="Max" value="1e+09"/>
+            <Option type="double" name="Min" value="-1e+09"/>
+            <Option type="int" name="Precision" value="3"/>
+            <Option type="int" name="Step" value="1"/>
+            <Option type="QString" name="Style" value="SpinBox"/>
           </Option>
         </config>
       </editWidget>
@@ -534,12 +534,12 @@
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option value="true" name="AllowNull" type="bool"/>
-            <Option value="1e+09" name="Max" type="double"/>
-            <Option value="-1e+09" name="Min" type="double"/>
-            <Option value="3" name="Precision" type="int"/>
-            <Option value="1" name="Step" type="int"/>
-            <Option value="SpinBox" name="Style" type="QString"/>
+            <Option type="bool" name="AllowNull" value="true"/>
+            <Option type="double" name="Max" value="1e+09"/>
+            <Option type="double" name="Min" value="-1e+09"/>
+            <Option type="int" name="Precision" value="3"/>
+            <Option type="int" name="Step" value="1"/>
+            <Option type="QString" name="Style" value="SpinBox"/>
           </Option>
         </config>
       </editWidget>
@@ -548,8 +548,8 @@
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option value="false" name="IsMultiline" type="bool"/>
-            <Option value="false" name="UseHtml" type="bool"/>
+            <Option type="bool" name="IsMultiline" value="false"/>
+            <Option type="bool" name="UseHtml" value="false"/>
           </Option>
         </config>
       </editWidget>
@@ -558,8 +558,8 @@
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option value="false" name="IsMultiline" type="bool"/>
-            <Option value="false" name="UseHtml" type="bool"/>
+            <Option type="bool" name="IsMultiline" value="false"/>
+            <Option type="bool" name="UseHtml" value="false"/>
           </Option>
         </config>
       </editWidget>
@@ -568,8 +568,8 @@
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option value="false" name="IsMultiline" type="bool"/>
-            <Option value="false" name="UseHtml" type="bool"/>
+            <Option type="bool" name="IsMultiline" value="false"/>
+            <Option type="bool" name="UseHtml" value="false"/>
           </Option>
         </config>
       </editWidget>
@@ -578,8 +578,8 @@
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option value="false" name="IsMultiline" type="bool"/>
-            <Option value="false" name="UseHtml" type="bool"/>
+            <Option type="bool" name="IsMultiline" value="false"/>
+            <Option type="bool" name="UseHtml" value="false"/>
           </Option>
         </config>
       </editWidget>
@@ -588,8 +588,8 @@
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option value="false" name="IsMultiline" type="bool"/>
-            <Option value="false" name="UseHtml" type="bool"/>
+            <Option type="bool" name="IsMultiline" value="false"/>
+            <Option type="bool" name="UseHtml" value="false"/>
           </Option>
         </config>
       </editWidget>
@@ -598,12 +598,12 @@
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option value="true" name="AllowNull" type="bool"/>
-            <Option value="1e+09" name="Max" type="double"/>
-            <Option value="-1e+09" name="Min" type="double"/>
-            <Option value="2" name="Precision" type="int"/>
-            <Option value="1" name="Step" type="int"/>
-            <Option value="SpinBox" name="Style" type="QString"/>
+            <Option type="bool" name="AllowNull" value="true"/>
+            <Option type="double" name="Max" value="1e+09"/>
+            <Option type="double" name="Min" value="-1e+09"/>
+            <Option type="int" name="Precision" value="2"/>
+            <Option type="int" name="Step" value="1"/>
+            <Option type="QString" name="Style" value="SpinBox"/>
           </Option>
         </config>
       </editWidget>
@@ -612,12 +612,12 @@
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option value="true" name="AllowNull" type="bool"/>
-            <Option value="1e+09" name="Max" type="double"/>
-            <Option value="-1e+09" name="Min" type="double"/>
-            <Option value="2" name="Precision" type="int"/>
-            <Option value="1" name="Step" type="int"/>
-            <Option value="SpinBox" name="Style" type="QString"/>
+            <Option type="bool" name="AllowNull" value="true"/>
+            <Option type="double" name="Max" value="1e+09"/>
+            <Option type="double" name="Min" value="-1e+09"/>
+            <Option type="int" name="Precision" value="2"/>
+            <Option type="int" name="Step" value="1"/>
+            <Option type="QString" name="Style" value="SpinBox"/>
           </Option>
         </config>
       </editWidget>
@@ -626,8 +626,8 @@
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option value="false" name="IsMultiline" type="bool"/>
-            <Option value="false" name="UseHtml" type="bool"/>
+            <Option type="bool" name="IsMultiline" value="false"/>
+            <Option type="bool" name="UseHtml" value="false"/>
           </Option>
         </config>
       </editWidget>
@@ -636,8 +636,8 @@
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option value="false" name="IsMultiline" type="bool"/>
-            <Option value="false" name="UseHtml" type="bool"/>
+            <Option type="bool" name="IsMultiline" value="false"/>
+            <Option type="bool" name="UseHtml" value="false"/>
           </Option>
         </config>
       </editWidget>
@@ -646,8 +646,8 @@
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option value="false" name="IsMultiline" type="bool"/>
-            <Option value="false" name="UseHtml" type="bool"/>
+            <Option type="bool" name="IsMultiline" value="false"/>
+            <Option type="bool" name="UseHtml" value="false"/>
           </Option>
         </config>
       </editWidget>
@@ -656,12 +656,12 @@
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option value="true" name="AllowNull" type="bool"/>
-            <Option value="1e+09" name="Max" type="double"/>
-            <Option value="-1e+09" name="Min" type="double"/>
-            <Option value="2" name="Precision" type="int"/>
-            <Option value="1" name="Step" type="int"/>
-            <Option value="SpinBox" name="Style" type="QString"/>
+            <Option type="bool" name="AllowNull" value="true"/>
+            <Option type="double" name="Max" value="1e+09"/>
+            <Option type="double" name="Min" value="-1e+09"/>
+            <Option type="int" name="Precision" value="2"/>
+            <Option type="int" name="Step" value="1"/>
+            <Option type="QString" name="Style" value="SpinBox"/>
           </Option>
         </config>
       </editWidget>
@@ -670,12 +670,12 @@
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option value="true" name="AllowNull" type="bool"/>
-            <Option value="1e+09" name="Max" type="double"/>
-            <Option value="-1e+09" name="Min" type="double"/>
-            <Option value="2" name="Precision" type="int"/>
-            <Option value="1" name="Step" type="int"/>
-            <Option value="SpinBox" name="Style" type="QString"/>
+            <Option type="bool" name="AllowNull" value="true"/>
+            <Option type="double" name="Max" value="1e+09"/>
+            <Option type="double" name="Min" value="-1e+09"/>
+            <Option type="int" name="Precision" value="2"/>
+            <Option type="int" name="Step" value="1"/>
+            <Option type="QString" name="Style" value="SpinBox"/>
           </Option>
         </config>
       </editWidget>
@@ -684,12 +684,26 @@
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option value="true" name="AllowNull" type="bool"/>
-            <Option value="1e+09" name="Max" type="double"/>
-            <Option value="-1e+09" name="Min" type="double"/>
-            <Option value="2" name="Precision" type="int"/>
-            <Option value="1" name="Step" type="int"/>
-            <Option value="SpinBox" name="Style" type="QString"/>
+            <Option type="bool" name="AllowNull" value="true"/>
+            <Option type="double" name="Max" value="1e+09"/>
+            <Option type="double" name="Min" value="-1e+09"/>
+            <Option type="int" name="Precision" value="2"/>
+            <Option type="int" name="Step" value="1"/>
+            <Option type="QString" name="Style" value="SpinBox"/>
+          </Option>
+        </config>
+      </editWidget>
+    </field>
+    <field configurationFlags="None" name="mine_curve_level">
+      <editWidget type="Range">
+        <config>
+          <Option type="Map">
+            <Option type="bool" name="AllowNull" value="true"/>
+            <Option type="double" name="Max" value="1e+09"/>
+            <Option type="double" name="Min" value="-1e+09"/>
+            <Option type="int" name="Precision" value="2"/>
+            <Option type="int" name="Step" value="1"/>
+            <Option type="QString" name="Style" value="SpinBox"/>
           </Option>
         </config>
       </editWidget>
@@ -698,8 +712,8 @@
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option value="false" name="IsMultiline" type="bool"/>
-            <Option value="false" name="UseHtml" type="bool"/>
+            <Option type="bool" name="IsMultiline" value="false"/>
+            <Option type="bool" name="UseHtml" value="false"/>
           </Option>
         </config>
       </editWidget>
@@ -715,8 +729,8 @@
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option value="false" name="IsMultiline" type="bool"/>
-            <Option value="false" name="UseHtml" type="bool"/>
+            <Option type="bool" name="IsMultiline" value="false"/>
+            <Option type="bool" name="UseHtml" value="false"/>
           </Option>
         </config>
       </editWidget>
@@ -725,8 +739,8 @@
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option value="false" name="IsMultiline" type="bool"/>
-            <Option value="false" name="UseHtml" type="bool"/>
+            <Option type="bool" name="IsMultiline" value="false"/>
+            <Option type="bool" name="UseHtml" value="false"/>
           </Option>
         </config>
       </editWidget>
@@ -735,8 +749,8 @@
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option value="false" name="IsMultiline" type="bool"/>
-            <Option value="false" name="UseHtml" type="bool"/>
+            <Option type="bool" name="IsMultiline" value="false"/>
+            <Option type="bool" name="UseHtml" value="false"/>
           </Option>
         </config>
       </editWidget>
@@ -745,8 +759,8 @@
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option value="false" name="IsMultiline" type="bool"/>
-            <Option value="false" name="UseHtml" type="bool"/>
+            <Option type="bool" name="IsMultiline" value="false"/>
+            <Option type="bool" name="UseHtml" value="false"/>
           </Option>
         </config>
       </editWidget>
@@ -755,8 +769,8 @@
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option value="false" name="IsMultiline" type="bool"/>
-            <Option value="false" name="UseHtml" type="bool"/>
+            <Option type="bool" name="IsMultiline" value="false"/>
+            <Option type="bool" name="UseHtml" value="false"/>
           </Option>
         </config>
       </editWidget>
@@ -765,8 +779,8 @@
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option value="false" name="IsMultiline" type="bool"/>
-            <Option value="false" name="UseHtml" type="bool"/>
+            <Option type="bool" name="IsMultiline" value="false"/>
+            <Option type="bool" name="UseHtml" value="false"/>
           </Option>
         </config>
       </editWidget>
@@ -796,154 +810,159 @@
     <alias field="contrast_day_k" index="20" name="Day contrast (K)"/>
     <alias field="contrast_night_k" index="21" name="Night contrast (K)"/>
     <alias field="mine_curve_r" index="22" name="Match with a mine's diurnal curve (-1 to 1)"/>
-    <alias field="fix_quality" index="23" name="GNSS fix quality"/>
-    <alias field="figure" index="24" name="Contrast curve"/>
-    <alias field="contrast_series" index="25" name="Contrast series (JSON)"/>
-    <alias field="short_id" index="26" name="Short id"/>
-    <alias field="depth" index="27" name="Burial depth ± 1σ"/>
-    <alias field="diffusivity" index="28" name="Thermal diffusivity ± 1σ"/>
-    <alias field="likelihood" index="29" name="Mine likelihood"/>
-    <alias field="cue_confidence_pct" index="30" name="Class cue confidence"/>
+    <alias field="mine_curve_level" index="23" name="Offset from a mine's diurnal curve (swings)"/>
+    <alias field="fix_quality" index="24" name="GNSS fix quality"/>
+    <alias field="figure" index="25" name="Contrast curve"/>
+    <alias field="contrast_series" index="26" name="Contrast series (JSON)"/>
+    <alias field="short_id" index="27" name="Short id"/>
+    <alias field="depth" index="28" name="Burial depth ± 1σ"/>
+    <alias field="diffusivity" index="29" name="Thermal diffusivity ± 1σ"/>
+    <alias field="likelihood" index="30" name="Mine likelihood"/>
+    <alias field="cue_confidence_pct" index="31" name="Class cue confidence"/>
   </aliases>
   <defaults>
-    <default applyOnUpdate="0" field="anomaly_id" expression=""/>
-    <default applyOnUpdate="0" field="x" expression=""/>
-    <default applyOnUpdate="0" field="y" expression=""/>
-    <default applyOnUpdate="0" field="lat" expression=""/>
-    <default applyOnUpdate="0" field="lon" expression=""/>
-    <default applyOnUpdate="0" field="area_m2" expression=""/>
-    <default applyOnUpdate="0" field="diameter_m" expression=""/>
-    <default applyOnUpdate="0" field="circularity" expression=""/>
-    <default applyOnUpdate="0" field="depth_m" expression=""/>
-    <default applyOnUpdate="0" field="depth_sigma_m" expression=""/>
-    <default applyOnUpdate="0" field="diffusivity_m2s" expression=""/>
-    <default applyOnUpdate="0" field="diffusivity_sigma_m2s" expression=""/>
-    <default applyOnUpdate="0" field="status" expression=""/>
-    <default applyOnUpdate="0" field="polarity" expression=""/>
-    <default applyOnUpdate="0" field="class_cue" expression=""/>
-    <default applyOnUpdate="0" field="cue_confidence" expression=""/>
-    <default applyOnUpdate="0" field="p_mine" expression=""/>
-    <default applyOnUpdate="0" field="priority" expression=""/>
-    <default applyOnUpdate="0" field="set_aside_reason" expression=""/>
-    <default applyOnUpdate="0" field="n_scans" expression=""/>
-    <default applyOnUpdate="0" field="contrast_day_k" expression=""/>
-    <default applyOnUpdate="0" field="contrast_night_k" expression=""/>
-    <default applyOnUpdate="0" field="mine_curve_r" expression=""/>
-    <default applyOnUpdate="0" field="fix_quality" expression=""/>
-    <default applyOnUpdate="0" field="figure" expression=""/>
-    <default applyOnUpdate="0" field="contrast_series" expression=""/>
-    <default applyOnUpdate="0" field="short_id" expression=""/>
-    <default applyOnUpdate="0" field="depth" expression=""/>
-    <default applyOnUpdate="0" field="diffusivity" expression=""/>
-    <default applyOnUpdate="0" field="likelihood" expression=""/>
-    <default applyOnUpdate="0" field="cue_confidence_pct" expression=""/>
+    <default field="anomaly_id" expression="" applyOnUpdate="0"/>
+    <default field="x" expression="" applyOnUpdate="0"/>
+    <default field="y" expression="" applyOnUpdate="0"/>
+    <default field="lat" expression="" applyOnUpdate="0"/>
+    <default field="lon" expression="" applyOnUpdate="0"/>
+    <default field="area_m2" expression="" applyOnUpdate="0"/>
+    <default field="diameter_m" expression="" applyOnUpdate="0"/>
+    <default field="circularity" expression="" applyOnUpdate="0"/>
+    <default field="depth_m" expression="" applyOnUpdate="0"/>
+    <default field="depth_sigma_m" expression="" applyOnUpdate="0"/>
+    <default field="diffusivity_m2s" expression="" applyOnUpdate="0"/>
+    <default field="diffusivity_sigma_m2s" expression="" applyOnUpdate="0"/>
+    <default field="status" expression="" applyOnUpdate="0"/>
+    <default field="polarity" expression="" applyOnUpdate="0"/>
+    <default field="class_cue" expression="" applyOnUpdate="0"/>
+    <default field="cue_confidence" expression="" applyOnUpdate="0"/>
+    <default field="p_mine" expression="" applyOnUpdate="0"/>
+    <default field="priority" expression="" applyOnUpdate="0"/>
+    <default field="set_aside_reason" expression="" applyOnUpdate="0"/>
+    <default field="n_scans" expression="" applyOnUpdate="0"/>
+    <default field="contrast_day_k" expression="" applyOnUpdate="0"/>
+    <default field="contrast_night_k" expression="" applyOnUpdate="0"/>
+    <default field="mine_curve_r" expression="" applyOnUpdate="0"/>
+    <default field="mine_curve_level" expression="" applyOnUpdate="0"/>
+    <default field="fix_quality" expression="" applyOnUpdate="0"/>
+    <default field="figure" expression="" applyOnUpdate="0"/>
+    <default field="contrast_series" expression="" applyOnUpdate="0"/>
+    <default field="short_id" expression="" applyOnUpdate="0"/>
+    <default field="depth" expression="" applyOnUpdate="0"/>
+    <default field="diffusivity" expression="" applyOnUpdate="0"/>
+    <default field="likelihood" expression="" applyOnUpdate="0"/>
+    <default field="cue_confidence_pct" expression="" applyOnUpdate="0"/>
   </defaults>
   <constraints>
-    <constraint exp_strength="0" unique_strength="0" field="anomaly_id" constraints="0" notnull_strength="0"/>
-    <constraint exp_strength="0" unique_strength="0" field="x" constraints="0" notnull_strength="0"/>
-    <constraint exp_strength="0" unique_strength="0" field="y" constraints="0" notnull_strength="0"/>
-    <constraint exp_strength="0" unique_strength="0" field="lat" constraints="0" notnull_strength="0"/>
-    <constraint exp_strength="0" unique_strength="0" field="lon" constraints="0" notnull_strength="0"/>
-    <constraint exp_strength="0" unique_strength="0" field="area_m2" constraints="0" notnull_strength="0"/>
-    <constraint exp_strength="0" unique_strength="0" field="diameter_m" constraints="0" notnull_strength="0"/>
-    <constraint exp_strength="0" unique_strength="0" field="circularity" constraints="0" notnull_strength="0"/>
-    <constraint exp_strength="0" unique_strength="0" field="depth_m" constraints="0" notnull_strength="0"/>
-    <constraint exp_strength="0" unique_strength="0" field="depth_sigma_m" constraints="0" notnull_strength="0"/>
-    <constraint exp_strength="0" unique_strength="0" field="diffusivity_m2s" constraints="0" notnull_strength="0"/>
-    <constraint exp_strength="0" unique_strength="0" field="diffusivity_sigma_m2s" constraints="0" notnull_strength="0"/>
-    <constraint exp_strength="0" unique_strength="0" field="status" constraints="0" notnull_strength="0"/>
-    <constraint exp_strength="0" unique_strength="0" field="polarity" constraints="0" notnull_strength="0"/>
-    <constraint exp_strength="0" unique_strength="0" field="class_cue" constraints="0" notnull_strength="0"/>
-    <constraint exp_strength="0" unique_strength="0" field="cue_confidence" constraints="0" notnull_strength="0"/>
-    <constraint exp_strength="0" unique_strength="0" field="p_mine" constraints="0" notnull_strength="0"/>
-    <constraint exp_strength="0" unique_strength="0" field="priority" constraints="0" notnull_strength="0"/>
-    <constraint exp_strength="0" unique_strength="0" field="set_aside_reason" constraints="0" notnull_strength="0"/>
-    <constraint exp_strength="0" unique_strength="0" field="n_scans" constraints="0" notnull_strength="0"/>
-    <constraint exp_strength="0" unique_strength="0" field="contrast_day_k" constraints="0" notnull_strength="0"/>
-    <constraint exp_strength="0" unique_strength="0" field="contrast_night_k" constraints="0" notnull_strength="0"/>
-    <constraint exp_strength="0" unique_strength="0" field="mine_curve_r" constraints="0" notnull_strength="0"/>
-    <constraint exp_strength="0" unique_strength="0" field="fix_quality" constraints="0" notnull_strength="0"/>
-    <constraint exp_strength="0" unique_strength="0" field="figure" constraints="0" notnull_strength="0"/>
-    <constraint exp_strength="0" unique_strength="0" field="contrast_series" constraints="0" notnull_strength="0"/>
-    <constraint exp_strength="0" unique_strength="0" field="short_id" constraints="0" notnull_strength="0"/>
-    <constraint exp_strength="0" unique_strength="0" field="depth" constraints="0" notnull_strength="0"/>
-    <constraint exp_strength="0" unique_strength="0" field="diffusivity" constraints="0" notnull_strength="0"/>
-    <constraint exp_strength="0" unique_strength="0" field="likelihood" constraints="0" notnull_strength="0"/>
-    <constraint exp_strength="0" unique_strength="0" field="cue_confidence_pct" constraints="0" notnull_strength="0"/>
+    <constraint exp_strength="0" field="anomaly_id" notnull_strength="0" constraints="0" unique_strength="0"/>
+    <constraint exp_strength="0" field="x" notnull_strength="0" constraints="0" unique_strength="0"/>
+    <constraint exp_strength="0" field="y" notnull_strength="0" constraints="0" unique_strength="0"/>
+    <constraint exp_strength="0" field="lat" notnull_strength="0" constraints="0" unique_strength="0"/>
+    <constraint exp_strength="0" field="lon" notnull_strength="0" constraints="0" unique_strength="0"/>
+    <constraint exp_strength="0" field="area_m2" notnull_strength="0" constraints="0" unique_strength="0"/>
+    <constraint exp_strength="0" field="diameter_m" notnull_strength="0" constraints="0" unique_strength="0"/>
+    <constraint exp_strength="0" field="circularity" notnull_strength="0" constraints="0" unique_strength="0"/>
+    <constraint exp_strength="0" field="depth_m" notnull_strength="0" constraints="0" unique_strength="0"/>
+    <constraint exp_strength="0" field="depth_sigma_m" notnull_strength="0" constraints="0" unique_strength="0"/>
+    <constraint exp_strength="0" field="diffusivity_m2s" notnull_strength="0" constraints="0" unique_strength="0"/>
+    <constraint exp_strength="0" field="diffusivity_sigma_m2s" notnull_strength="0" constraints="0" unique_strength="0"/>
+    <constraint exp_strength="0" field="status" notnull_strength="0" constraints="0" unique_strength="0"/>
+    <constraint exp_strength="0" field="polarity" notnull_strength="0" constraints="0" unique_strength="0"/>
+    <constraint exp_strength="0" field="class_cue" notnull_strength="0" constraints="0" unique_strength="0"/>
+    <constraint exp_strength="0" field="cue_confidence" notnull_strength="0" constraints="0" unique_strength="0"/>
+    <constraint exp_strength="0" field="p_mine" notnull_strength="0" constraints="0" unique_strength="0"/>
+    <constraint exp_strength="0" field="priority" notnull_strength="0" constraints="0" unique_strength="0"/>
+    <constraint exp_strength="0" field="set_aside_reason" notnull_strength="0" constraints="0" unique_strength="0"/>
+    <constraint exp_strength="0" field="n_scans" notnull_strength="0" constraints="0" unique_strength="0"/>
+    <constraint exp_strength="0" field="contrast_day_k" notnull_strength="0" constraints="0" unique_strength="0"/>
+    <constraint exp_strength="0" field="contrast_night_k" notnull_strength="0" constraints="0" unique_strength="0"/>
+    <constraint exp_strength="0" field="mine_curve_r" notnull_strength="0" constraints="0" unique_strength="0"/>
+    <constraint exp_strength="0" field="mine_curve_level" notnull_strength="0" constraints="0" unique_strength="0"/>
+    <constraint exp_strength="0" field="fix_quality" notnull_strength="0" constraints="0" unique_strength="0"/>
+    <constraint exp_strength="0" field="figure" notnull_strength="0" constraints="0" unique_strength="0"/>
+    <constraint exp_strength="0" field="contrast_series" notnull_strength="0" constraints="0" unique_strength="0"/>
+    <constraint exp_strength="0" field="short_id" notnull_strength="0" constraints="0" unique_strength="0"/>
+    <constraint exp_strength="0" field="depth" notnull_strength="0" constraints="0" unique_strength="0"/>
+    <constraint exp_strength="0" field="diffusivity" notnull_strength="0" constraints="0" unique_strength="0"/>
+    <constraint exp_strength="0" field="likelihood" notnull_strength="0" constraints="0" unique_strength="0"/>
+    <constraint exp_strength="0" field="cue_confidence_pct" notnull_strength="0" constraints="0" unique_strength="0"/>
   </constraints>
   <constraintExpressions>
-    <constraint desc="" field="anomaly_id" exp=""/>
-    <constraint desc="" field="x" exp=""/>
-    <constraint desc="" field="y" exp=""/>
-    <constraint desc="" field="lat" exp=""/>
-    <constraint desc="" field="lon" exp=""/>
-    <constraint desc="" field="area_m2" exp=""/>
-    <constraint desc="" field="diameter_m" exp=""/>
-    <constraint desc="" field="circularity" exp=""/>
-    <constraint desc="" field="depth_m" exp=""/>
-    <constraint desc="" field="depth_sigma_m" exp=""/>
-    <constraint desc="" field="diffusivity_m2s" exp=""/>
-    <constraint desc="" field="diffusivity_sigma_m2s" exp=""/>
-    <constraint desc="" field="status" exp=""/>
-    <constraint desc="" field="polarity" exp=""/>
-    <constraint desc="" field="class_cue" exp=""/>
-    <constraint desc="" field="cue_confidence" exp=""/>
-    <constraint desc="" field="p_mine" exp=""/>
-    <constraint desc="" field="priority" exp=""/>
-    <constraint desc="" field="set_aside_reason" exp=""/>
-    <constraint desc="" field="n_scans" exp=""/>
-    <constraint desc="" field="contrast_day_k" exp=""/>
-    <constraint desc="" field="contrast_night_k" exp=""/>
-    <constraint desc="" field="mine_curve_r" exp=""/>
-    <constraint desc="" field="fix_quality" exp=""/>
-    <constraint desc="" field="figure" exp=""/>
-    <constraint desc="" field="contrast_series" exp=""/>
-    <constraint desc="" field="short_id" exp=""/>
-    <constraint desc="" field="depth" exp=""/>
-    <constraint desc="" field="diffusivity" exp=""/>
-    <constraint desc="" field="likelihood" exp=""/>
-    <constraint desc="" field="cue_confidence_pct" exp=""/>
+    <constraint field="anomaly_id" exp="" desc=""/>
+    <constraint field="x" exp="" desc=""/>
+    <constraint field="y" exp="" desc=""/>
+    <constraint field="lat" exp="" desc=""/>
+    <constraint field="lon" exp="" desc=""/>
+    <constraint field="area_m2" exp="" desc=""/>
+    <constraint field="diameter_m" exp="" desc=""/>
+    <constraint field="circularity" exp="" desc=""/>
+    <constraint field="depth_m" exp="" desc=""/>
+    <constraint field="depth_sigma_m" exp="" desc=""/>
+    <constraint field="diffusivity_m2s" exp="" desc=""/>
+    <constraint field="diffusivity_sigma_m2s" exp="" desc=""/>
+    <constraint field="status" exp="" desc=""/>
+    <constraint field="polarity" exp="" desc=""/>
+    <constraint field="class_cue" exp="" desc=""/>
+    <constraint field="cue_confidence" exp="" desc=""/>
+    <constraint field="p_mine" exp="" desc=""/>
+    <constraint field="priority" exp="" desc=""/>
+    <constraint field="set_aside_reason" exp="" desc=""/>
+    <constraint field="n_scans" exp="" desc=""/>
+    <constraint field="contrast_day_k" exp="" desc=""/>
+    <constraint field="contrast_night_k" exp="" desc=""/>
+    <constraint field="mine_curve_r" exp="" desc=""/>
+    <constraint field="mine_curve_level" exp="" desc=""/>
+    <constraint field="fix_quality" exp="" desc=""/>
+    <constraint field="figure" exp="" desc=""/>
+    <constraint field="contrast_series" exp="" desc=""/>
+    <constraint field="short_id" exp="" desc=""/>
+    <constraint field="depth" exp="" desc=""/>
+    <constraint field="diffusivity" exp="" desc=""/>
+    <constraint field="likelihood" exp="" desc=""/>
+    <constraint field="cue_confidence_pct" exp="" desc=""/>
   </constraintExpressions>
   <expressionfields>
-    <field typeName="" comment="" subType="0" name="short_id" precision="0" length="0" type="10" expression="'S-' || lpad(to_string(to_int(regexp_substr(&quot;anomaly_id&quot;, '(\\d+)$'))), 3, '0')"/>
-    <field typeName="" comment="" subType="0" name="depth" precision="0" length="0" type="10" expression="CASE WHEN &quot;depth_m&quot; * 100 IS NULL THEN 'not characterised' WHEN &quot;depth_sigma_m&quot; * 100 IS NULL THEN format_number(&quot;depth_m&quot; * 100, 1) || ' cm' ELSE format_number(&quot;depth_m&quot; * 100, 1) || ' ± ' || format_number(&quot;depth_sigma_m&quot; * 100, 1) || ' cm' END"/>
-    <field typeName="" comment="" subType="0" name="diffusivity" precision="0" length="0" type="10" expression="CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 IS NULL THEN 'not characterised' WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 IS NULL THEN CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' mm²/s' ELSE CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' ± ' || CASE WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_sigma_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6))))) END || ' mm²/s' END"/>
-    <field typeName="" comment="" subType="0" name="likelihood" precision="0" length="0" type="10" expression="CASE WHEN attribute('p_mine') IS NULL THEN 'not estimated' ELSE format_number(100 * attribute('p_mine'), 0) || ' %' END"/>
-    <field typeName="" comment="" subType="0" name="cue_confidence_pct" precision="0" length="0" type="10" expression="CASE WHEN coalesce(attribute('cue_confidence'), attribute('confidence')) IS NULL THEN NULL ELSE format_number(100 * coalesce(attribute('cue_confidence'), attribute('confidence')), 0) || ' %' END"/>
+    <field precision="0" typeName="" length="0" comment="" type="10" subType="0" expression="'S-' || lpad(to_string(to_int(regexp_substr(&quot;anomaly_id&quot;, '(\\d+)$'))), 3, '0')" name="short_id"/>
+    <field precision="0" typeName="" length="0" comment="" type="10" subType="0" expression="CASE WHEN &quot;depth_m&quot; * 100 IS NULL THEN 'not characterised' WHEN &quot;depth_sigma_m&quot; * 100 IS NULL THEN format_number(&quot;depth_m&quot; * 100, 1) || ' cm' ELSE format_number(&quot;depth_m&quot; * 100, 1) || ' ± ' || format_number(&quot;depth_sigma_m&quot; * 100, 1) || ' cm' END" name="depth"/>
+    <field precision="0" typeName="" length="0" comment="" type="10" subType="0" expression="CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 IS NULL THEN 'not characterised' WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 IS NULL THEN CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' mm²/s' ELSE CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' ± ' || CASE WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_sigma_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6))))) END || ' mm²/s' END" name="diffusivity"/>
+    <field precision="0" typeName="" length="0" comment="" type="10" subType="0" expression="CASE WHEN attribute('p_mine') IS NULL THEN 'not estimated' ELSE format_number(100 * attribute('p_mine'), 0) || ' %' END" name="likelihood"/>
+    <field precision="0" typeName="" length="0" comment="" type="10" subType="0" expression="CASE WHEN coalesce(attribute('cue_confidence'), attribute('confidence')) IS NULL THEN NULL ELSE format_number(100 * coalesce(attribute('cue_confidence'), attribute('confidence')), 0) || ' %' END" name="cue_confidence_pct"/>
   </expressionfields>
-  <attributetableconfig actionWidgetStyle="dropDown" sortExpression="coalesce(attribute('priority'), 1000000 * (CASE WHEN &quot;class_cue&quot; = 'at_mine' THEN 0 WHEN &quot;class_cue&quot; = 'ap_mine' THEN 1 WHEN &quot;class_cue&quot; = 'unknown' THEN 2 ELSE 3 END) - round(1000 * max(abs(&quot;contrast_day_k&quot;), abs(&quot;contrast_night_k&quot;))))" sortOrder="0">
+  <attributetableconfig actionWidgetStyle="dropDown" sortOrder="0" sortExpression="coalesce(attribute('priority'), 1000000 * (CASE WHEN &quot;class_cue&quot; = 'at_mine' THEN 0 WHEN &quot;class_cue&quot; = 'ap_mine' THEN 1 WHEN &quot;class_cue&quot; = 'unknown' THEN 2 ELSE 3 END) - round(1000 * max(abs(&quot;contrast_day_k&quot;), abs(&quot;contrast_night_k&quot;))))">
     <columns>
-      <column hidden="0" width="-1" name="anomaly_id" type="field"/>
-      <column hidden="0" width="-1" name="x" type="field"/>
-      <column hidden="0" width="-1" name="y" type="field"/>
-      <column hidden="0" width="-1" name="lat" type="field"/>
-      <column hidden="0" width="-1" name="lon" type="field"/>
-      <column hidden="0" width="-1" name="area_m2" type="field"/>
-      <column hidden="0" width="-1" name="diameter_m" type="field"/>
-      <column hidden="0" width="-1" name="circularity" type="field"/>
-      <column hidden="0" width="-1" name="depth_m" type="field"/>
-      <column hidden="0" width="-1" name="depth_sigma_m" type="field"/>
-      <column hidden="0" width="-1" name="diffusivity_m2s" type="field"/>
-      <column hidden="0" width="-1" name="diffusivity_sigma_m2s" type="field"/>
-      <column hidden="0" width="-1" name="status" type="field"/>
-      <column hidden="0" width="-1" name="polarity" type="field"/>
-      <column hidden="0" width="-1" name="class_cue" type="field"/>
-      <column hidden="0" width="-1" name="cue_confidence" type="field"/>
-      <column hidden="0" width="-1" name="p_mine" type="field"/>
-      <column hidden="0" width="-1" name="priority" type="field"/>
-      <column hidden="0" width="-1" name="set_aside_reason" type="field"/>
-      <column hidden="0" width="-1" name="n_scans" type="field"/>
-      <column hidden="0" width="-1" name="contrast_day_k" type="field"/>
-      <column hidden="0" width="-1" name="contrast_night_k" type="field"/>
-      <column hidden="0" width="-1" name="mine_curve_r" type="field"/>
-      <column hidden="0" width="-1" name="fix_quality" type="field"/>
-      <column hidden="0" width="-1" name="figure" type="field"/>
-      <column hidden="0" width="-1" name="contrast_series" type="field"/>
-      <column hidden="0" width="-1" name="short_id" type="field"/>
-      <column hidden="0" width="-1" name="depth" type="field"/>
-      <column hidden="0" width="-1" name="diffusivity" type="field"/>
-      <column hidden="0" width="-1" name="likelihood" type="field"/>
-      <column hidden="0" width="-1" name="cue_confidence_pct" type="field"/>
+      <column hidden="0" width="-1" type="field" name="anomaly_id"/>
+      <column hidden="0" width="-1" type="field" name="x"/>
+      <column hidden="0" width="-1" type="field" name="y"/>
+      <column hidden="0" width="-1" type="field" name="lat"/>
+      <column hidden="0" width="-1" type="field" name="lon"/>
+      <column hidden="0" width="-1" type="field" name="area_m2"/>
+      <column hidden="0" width="-1" type="field" name="diameter_m"/>
+      <column hidden="0" width="-1" type="field" name="circularity"/>
+      <column hidden="0" width="-1" type="field" name="depth_m"/>
+      <column hidden="0" width="-1" type="field" name="depth_sigma_m"/>
+      <column hidden="0" width="-1" type="field" name="diffusivity_m2s"/>
+      <column hidden="0" width="-1" type="field" name="diffusivity_sigma_m2s"/>
+      <column hidden="0" width="-1" type="field" name="status"/>
+      <column hidden="0" width="-1" type="field" name="polarity"/>
+      <column hidden="0" width="-1" type="field" name="class_cue"/>
+      <column hidden="0" width="-1" type="field" name="cue_confidence"/>
+      <column hidden="0" width="-1" type="field" name="p_mine"/>
+      <column hidden="0" width="-1" type="field" name="priority"/>
+      <column hidden="0" width="-1" type="field" name="set_aside_reason"/>
+      <column hidden="0" width="-1" type="field" name="n_scans"/>
+      <column hidden="0" width="-1" type="field" name="contrast_day_k"/>
+      <column hidden="0" width="-1" type="field" name="contrast_night_k"/>
+      <column hidden="0" width="-1" type="field" name="mine_curve_r"/>
+      <column hidden="0" width="-1" type="field" name="mine_curve_level"/>
+      <column hidden="0" width="-1" type="field" name="fix_quality"/>
+      <column hidden="0" width="-1" type="field" name="figure"/>
+      <column hidden="0" width="-1" type="field" name="contrast_series"/>
+      <column hidden="0" width="-1" type="field" name="short_id"/>
+      <column hidden="0" width="-1" type="field" name="depth"/>
+      <column hidden="0" width="-1" type="field" name="diffusivity"/>
+      <column hidden="0" width="-1" type="field" name="likelihood"/>
+      <column hidden="0" width="-1" type="field" name="cue_confidence_pct"/>
       <column hidden="1" width="-1" type="actions"/>
     </columns>
   </attributetableconfig>
@@ -960,57 +979,58 @@
   <featformsuppress>0</featformsuppress>
   <editorlayout>tablayout</editorlayout>
   <attributeEditorForm>
-    <attributeEditorContainer columnCount="1" visibilityExpression="" visibilityExpressionEnabled="0" groupBox="0" name="Suspect" showLabel="1">
-      <attributeEditorContainer columnCount="1" visibilityExpression="" visibilityExpressionEnabled="0" groupBox="1" name="Identification" showLabel="1">
-        <attributeEditorField name="short_id" index="26" showLabel="1"/>
-        <attributeEditorField name="anomaly_id" index="0" showLabel="1"/>
-        <attributeEditorField name="priority" index="17" showLabel="1"/>
-        <attributeEditorField name="class_cue" index="14" showLabel="1"/>
-        <attributeEditorField name="likelihood" index="29" showLabel="1"/>
-        <attributeEditorField name="cue_confidence_pct" index="30" showLabel="1"/>
-        <attributeEditorField name="status" index="12" showLabel="1"/>
-        <attributeEditorField name="polarity" index="13" showLabel="1"/>
-        <attributeEditorField name="set_aside_reason" index="18" showLabel="1"/>
+    <attributeEditorContainer columnCount="1" showLabel="1" groupBox="0" visibilityExpressionEnabled="0" name="Suspect" visibilityExpression="">
+      <attributeEditorContainer columnCount="1" showLabel="1" groupBox="1" visibilityExpressionEnabled="0" name="Identification" visibilityExpression="">
+        <attributeEditorField showLabel="1" index="27" name="short_id"/>
+        <attributeEditorField showLabel="1" index="0" name="anomaly_id"/>
+        <attributeEditorField showLabel="1" index="17" name="priority"/>
+        <attributeEditorField showLabel="1" index="14" name="class_cue"/>
+        <attributeEditorField showLabel="1" index="30" name="likelihood"/>
+        <attributeEditorField showLabel="1" index="31" name="cue_confidence_pct"/>
+        <attributeEditorField showLabel="1" index="12" name="status"/>
+        <attributeEditorField showLabel="1" index="13" name="polarity"/>
+        <attributeEditorField showLabel="1" index="18" name="set_aside_reason"/>
       </attributeEditorContainer>
-      <attributeEditorContainer columnCount="1" visibilityExpression="" visibilityExpressionEnabled="0" groupBox="1" name="Burial depth and soil" showLabel="1">
-        <attributeEditorField name="depth" index="27" showLabel="1"/>
-        <attributeEditorField name="diffusivity" index="28" showLabel="1"/>
+      <attributeEditorContainer columnCount="1" showLabel="1" groupBox="1" visibilityExpressionEnabled="0" name="Burial depth and soil" visibilityExpression="">
+        <attributeEditorField showLabel="1" index="28" name="depth"/>
+        <attributeEditorField showLabel="1" index="29" name="diffusivity"/>
       </attributeEditorContainer>
-      <attributeEditorContainer columnCount="1" visibilityExpression="" visibilityExpressionEnabled="0" groupBox="1" name="Thermal contrast" showLabel="1">
-        <attributeEditorField name="contrast_day_k" index="20" showLabel="1"/>
-        <attributeEditorField name="contrast_night_k" index="21" showLabel="1"/>
-        <attributeEditorField name="mine_curve_r" index="22" showLabel="1"/>
-        <attributeEditorField name="n_scans" index="19" showLabel="1"/>
+      <attributeEditorContainer columnCount="1" showLabel="1" groupBox="1" visibilityExpressionEnabled="0" name="Thermal contrast" visibilityExpression="">
+        <attributeEditorField showLabel="1" index="20" name="contrast_day_k"/>
+        <attributeEditorField showLabel="1" index="21" name="contrast_night_k"/>
+        <attributeEditorField showLabel="1" index="22" name="mine_curve_r"/>
+        <attributeEditorField showLabel="1" index="23" name="mine_curve_level"/>
+        <attributeEditorField showLabel="1" index="19" name="n_scans"/>
       </attributeEditorContainer>
-      <attributeEditorContainer columnCount="1" visibilityExpression="" visibilityExpressionEnabled="0" groupBox="1" name="Shape" showLabel="1">
-        <attributeEditorField name="diameter_m" index="6" showLabel="1"/>
-        <attributeEditorField name="area_m2" index="5" showLabel="1"/>
-        <attributeEditorField name="circularity" index="7" showLabel="1"/>
-      </attributeEditorContainer>
-    </attributeEditorContainer>
-    <attributeEditorContainer columnCount="1" visibilityExpression="" visibilityExpressionEnabled="0" groupBox="0" name="Contrast curve" showLabel="1">
-      <attributeEditorContainer columnCount="1" visibilityExpression="" visibilityExpressionEnabled="0" groupBox="1" name="Contrast curve" showLabel="1">
-        <attributeEditorField name="figure" index="24" showLabel="1"/>
+      <attributeEditorContainer columnCount="1" showLabel="1" groupBox="1" visibilityExpressionEnabled="0" name="Shape" visibilityExpression="">
+        <attributeEditorField showLabel="1" index="6" name="diameter_m"/>
+        <attributeEditorField showLabel="1" index="5" name="area_m2"/>
+        <attributeEditorField showLabel="1" index="7" name="circularity"/>
       </attributeEditorContainer>
     </attributeEditorContainer>
-    <attributeEditorContainer columnCount="1" visibilityExpression="" visibilityExpressionEnabled="0" groupBox="0" name="Position" showLabel="1">
-      <attributeEditorContainer columnCount="1" visibilityExpression="" visibilityExpressionEnabled="0" groupBox="1" name="Position" showLabel="1">
-        <attributeEditorField name="x" index="1" showLabel="1"/>
-        <attributeEditorField name="y" index="2" showLabel="1"/>
-        <attributeEditorField name="lat" index="3" showLabel="1"/>
-        <attributeEditorField name="lon" index="4" showLabel="1"/>
-        <attributeEditorField name="fix_quality" index="23" showLabel="1"/>
+    <attributeEditorContainer columnCount="1" showLabel="1" groupBox="0" visibilityExpressionEnabled="0" name="Contrast curve" visibilityExpression="">
+      <attributeEditorContainer columnCount="1" showLabel="1" groupBox="1" visibilityExpressionEnabled="0" name="Contrast curve" visibilityExpression="">
+        <attributeEditorField showLabel="1" index="25" name="figure"/>
       </attributeEditorContainer>
     </attributeEditorContainer>
-    <attributeEditorContainer columnCount="1" visibilityExpression="" visibilityExpressionEnabled="0" groupBox="0" name="Stored values" showLabel="1">
-      <attributeEditorContainer columnCount="1" visibilityExpression="" visibilityExpressionEnabled="0" groupBox="1" name="Stored values" showLabel="1">
-        <attributeEditorField name="depth_m" index="8" showLabel="1"/>
-        <attributeEditorField name="depth_sigma_m" index="9" showLabel="1"/>
-        <attributeEditorField name="diffusivity_m2s" index="10" showLabel="1"/>
-        <attributeEditorField name="diffusivity_sigma_m2s" index="11" showLabel="1"/>
-        <attributeEditorField name="p_mine" index="16" showLabel="1"/>
-        <attributeEditorField name="cue_confidence" index="15" showLabel="1"/>
-        <attributeEditorField name="contrast_series" index="25" showLabel="1"/>
+    <attributeEditorContainer columnCount="1" showLabel="1" groupBox="0" visibilityExpressionEnabled="0" name="Position" visibilityExpression="">
+      <attributeEditorContainer columnCount="1" showLabel="1" groupBox="1" visibilityExpressionEnabled="0" name="Position" visibilityExpression="">
+        <attributeEditorField showLabel="1" index="1" name="x"/>
+        <attributeEditorField showLabel="1" index="2" name="y"/>
+        <attributeEditorField showLabel="1" index="3" name="lat"/>
+        <attributeEditorField showLabel="1" index="4" name="lon"/>
+        <attributeEditorField showLabel="1" index="24" name="fix_quality"/>
+      </attributeEditorContainer>
+    </attributeEditorContainer>
+    <attributeEditorContainer columnCount="1" showLabel="1" groupBox="0" visibilityExpressionEnabled="0" name="Stored values" visibilityExpression="">
+      <attributeEditorContainer columnCount="1" showLabel="1" groupBox="1" visibilityExpressionEnabled="0" name="Stored values" visibilityExpression="">
+        <attributeEditorField showLabel="1" index="8" name="depth_m"/>
+        <attributeEditorField showLabel="1" index="9" name="depth_sigma_m"/>
+        <attributeEditorField showLabel="1" index="10" name="diffusivity_m2s"/>
+        <attributeEditorField showLabel="1" index="11" name="diffusivity_sigma_m2s"/>
+        <attributeEditorField showLabel="1" index="16" name="p_mine"/>
+        <attributeEditorField showLabel="1" index="15" name="cue_confidence"/>
+        <attributeEditorField showLabel="1" index="26" name="contrast_series"/>
       </attributeEditorContainer>
     </attributeEditorContainer>
   </attributeEditorForm>

@@ -7,8 +7,13 @@ import math
 import numpy as np
 import pytest
 
-from clearfast_gis.detection.classify import CLUTTER_CURVE_R, classify
-from clearfast_gis.detection.curve import match_curves, mine_curve_match
+from clearfast_gis.detection.classify import (
+    CLUTTER_CURVE_R,
+    MAX_MINE_CURVE_LEVEL,
+    MINE_CURVE_R,
+    classify,
+)
+from clearfast_gis.detection.curve import match_curves, mine_curve_level, mine_curve_match
 from clearfast_gis.detection.features import AnomalyFeatures
 from clearfast_gis.thermal import clear_sky_forcing
 from clearfast_gis.thermal.daycontrast import day_contrast
@@ -103,3 +108,74 @@ def test_a_warm_stone_against_the_curve_is_clutter():
     assert classify(f, mine_curve_r=0.6)[0] == "ap_mine"
     weak = _features(score=1.0)
     assert classify(weak, mine_curve_r=-0.8)[0] == "unknown"
+
+
+# --- the level of a curve against the mine's: the bare edge of a grass patch ---------------
+
+SOUTH_LAT_DEG, SOUTH_LON_DEG = -15.16, 19.17
+SOUTH_DAY0_S = parse_utc("2026-01-15T00:00:00Z")
+#: The demo's six scans of the southern-summer day of ``benchmarks/conditions.py``.
+SOUTH_SCANS_S = SOUTH_DAY0_S + 3664.7 + 4 * 3600.0 * np.arange(6)
+#: Measured contrast curves (first band, K) on the demo's southern-summer survey of seed 10
+#: (a tuning seed): four suspects on the bare edges of two grass patches, cued ``ap_mine`` /
+#: ``at_mine`` before the level was used, and the four mines at 0-5 cm of that survey.
+EDGES_K = [[0.073, 0.513, 1.524, 2.207, 1.110, 0.586], [0.291, 0.982, 1.638, 1.978, 1.104, 0.828],
+           [0.323, 0.925, 1.473, 1.664, 0.971, 0.741], [0.196, 0.847, 1.865, 2.401, 1.303, 0.819]]
+MINES_K = [[-0.804, -0.291, 1.026, 0.848, -0.494, -0.627], [-0.364, -0.280, 0.318, 0.298, -0.156,
+                                                             -0.271],
+           [-1.005, -0.499, 0.749, 0.554, -0.698, -0.806], [-0.113, -0.073, 0.074, 0.110, 0.015,
+                                                            -0.080]]
+
+
+@pytest.fixture(scope="module")
+def south_curves():
+    """The reference mine curves at 0-5 cm of a clear southern-summer day on moist sand."""
+    forcing = clear_sky_forcing(SOUTH_LAT_DEG, SOUTH_LON_DEG, SOUTH_DAY0_S, 86400.0,
+                                t_air_min_c=17.0, t_air_max_c=29.0, rh_min_pct=55.0,
+                                rh_max_pct=85.0)
+    day = day_contrast(forcing, soil_of_type("sand", 0.3), SOUTH_SCANS_S, 0.05,
+                       SOUTH_LAT_DEG, SOUTH_LON_DEG)
+    return match_curves(day.depths_m, day.curves_k)
+
+
+def test_a_mine_sits_on_the_model(south_curves, clay_day):
+    for curves in (south_curves, clay_day[2]):
+        for m in curves:  # the model's own curves, scaled: level 0
+            assert mine_curve_level(0.6 * m, curves) == pytest.approx(0.0, abs=1e-9)
+    for c in MINES_K:
+        assert abs(mine_curve_level(np.array(c), south_curves)) < 0.15
+    forcing, soil, curves = clay_day
+    c = _contrast(forcing, soil, 0.052, 0.08, 0.02, "tnt")
+    assert abs(mine_curve_level(c, curves)) < 0.05
+
+
+def test_a_grass_edge_follows_the_shape_but_sits_above(south_curves):
+    for c in EDGES_K:
+        c = np.array(c)
+        assert mine_curve_match(c, south_curves) > MINE_CURVE_R  # the shape follows
+        assert mine_curve_level(c, south_curves) > MAX_MINE_CURVE_LEVEL  # warm at night
+    f = _features(diameter_m=0.30, diameter_px=15.0)
+    c = np.array(EDGES_K[1])
+    r, level = mine_curve_match(c, south_curves), mine_curve_level(c, south_curves)
+    assert classify(f, contrast_day_k=1.98, mine_curve_r=r)[0] == "at_mine"
+    assert classify(f, contrast_day_k=1.98, mine_curve_r=r, mine_curve_level=level)[0] \
+        == "unknown"
+
+
+def test_level_undefined():
+    curves = np.array([[-0.5, -0.3, 0.8, 0.4, -0.2, -0.4]])
+    assert math.isnan(mine_curve_level(np.full(6, 0.3), curves))  # flat
+    stone = np.array([1.9, 1.5, -0.1, 0.8, 1.4, 1.7])
+    assert math.isnan(mine_curve_level(stone, curves))  # runs against the mine's
+
+
+def test_mixed_polarity_that_follows_the_mine_curve_is_not_clutter():
+    """A 3 cm mine under grass (demo grass seed 10, a tuning seed): warm in two day scans,
+    cool in the morning one, unseen at night; its curve follows the model (+0.98)."""
+    pol = np.array([0, -1, 1, 1, -1, 0])
+    f = _features(polarity_per_scan=pol, polarity="mixed", n_scans=4, score=2.5,
+                  circularity=0.89)
+    # not clutter; not a mine cue either (vegetation pieces do the same: clear seed 10)
+    assert classify(f, contrast_day_k=0.11, mine_curve_r=0.98)[0] == "unknown"
+    assert classify(f, contrast_day_k=0.11, mine_curve_r=0.3)[0] == "clutter"
+    assert classify(f, contrast_day_k=0.11)[0] == "clutter"  # no model: as before

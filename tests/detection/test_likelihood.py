@@ -95,3 +95,17 @@ def test_screen_and_rank_keeps_the_order_and_splits():
     assert out[0]["priority"] == 1 and out[0]["set_aside_reason"] is None
     assert out[1]["p_mine"] is None and out[1]["priority"] is None
     assert "smallest mine" in out[1]["set_aside_reason"]
+
+
+def test_a_curve_off_the_mine_model_lowers_p_mine():
+    """The bare edge of a grass patch (southern summer, demo seed 10, a tuning seed): the
+    shape of a mine's curve (+0.95) but a whole swing above it (warm at night)."""
+    x = dict(zip(FEATURES, features(mine_like(mine_curve_level=-0.4)), strict=True))
+    assert x["curve_offset"] == pytest.approx(0.4)
+    assert features(mine_like(mine_curve_level=7.0))[FEATURES.index("curve_offset")] == 2.0
+    assert features(mine_like())[FEATURES.index("curve_offset")] == 0.0  # unknown
+    kw = dict(mine_curve_r=0.95, status="weak_contrast", diurnal_behaviour="warm",
+              diameter_m=0.30, score=4.0, circularity=0.73)
+    edge, on_model = mine_like(mine_curve_level=1.03, **kw), mine_like(mine_curve_level=0.0, **kw)
+    p = p_mine_from_features(np.array([features(on_model), features(edge)]), load_model())
+    assert p[1] < 0.5 * p[0]
