@@ -120,3 +120,18 @@ def test_a_found_object_is_not_found_twice():
     assert cores == [] and np.array_equal(labels, kept)
     _, cores = deep_cores(np.zeros(SHAPE, np.int32), match, RADIUS_PX, 25.0, 22.0)
     assert len(cores) == 1
+
+
+def test_a_curve_seen_over_part_of_the_day_is_no_core():
+    """Under a drifting lift a corner of the site is seen by a few scans only: a short piece
+    of a diurnal curve is matched by texture as well, so no core is made there."""
+    base, _ = _diurnal_stack(N_SCANS, [])
+    stack = _with(base, 100.0, 100.0, 0.08 * _curve(0.8))
+    seen = stack.copy()
+    seen[N_SCANS // 2:, :, 60:140, 60:140] = np.nan  # half the day only
+    empty = np.zeros(SHAPE, np.int32)
+    assert len(deep_cores(empty, stack_match(stack, TEMPLATES, RADIUS_PX), RADIUS_PX, 25.0,
+                          22.0)[1]) == 1
+    match = stack_match(seen, TEMPLATES, RADIUS_PX)
+    assert match.scans[100, 100] == N_SCANS // 2 and match.score[100, 100] > 6.0
+    assert deep_cores(empty, match, RADIUS_PX, 25.0, 22.0)[1] == []
