@@ -113,8 +113,9 @@ def detection_options(f):
                      "each pixel; 1 = binary OR).")(f)
     f = click.option("--max-anomalies", type=click.IntRange(min=1),
                      default=DEFAULTS.max_anomalies, show_default=True,
-                     help="Characterise and write at most this many anomalies (highest "
-                     "scores first).")(f)
+                     help="Characterise and write at most this many of the detector's "
+                     "anomalies (highest scores first); the deep cores of the stack's "
+                     "matched filter come on top.")(f)
     return f
 
 

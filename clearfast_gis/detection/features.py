@@ -45,7 +45,10 @@ from clearfast_gis.detection.detector import DetectionResult, count_finite
 from clearfast_gis.detection.stack import as_scan_stack, iter_images, map_scans
 from clearfast_gis.solar import local_solar_hour
 
-__all__ = ["AnomalyFeatures", "blob_features", "features_table", "summary_polarity"]
+__all__ = ["RING_RADII", "AnomalyFeatures", "blob_features", "features_table", "summary_polarity"]
+
+#: Inner and outer radius of the background ring around an object, in its equivalent radii.
+RING_RADII = (1.5, 2.5)
 
 # Apparent solar time, day [9, 17) h and night [20, 6) h: the scans whose sign sets the
 # diurnal behaviour of a blob (wide windows, so that most scans vote).
@@ -265,7 +268,7 @@ def blob_features(
     pixel_size_m: float | None = None,
     detection: DetectionResult | None = None,
     longitude_deg: float | None = None,
-    ring_radii: tuple[float, float] = (1.5, 2.5),
+    ring_radii: tuple[float, float] = RING_RADII,
     noise: str = "ring",
 ) -> list[AnomalyFeatures]:
     """Measure every labelled anomaly.

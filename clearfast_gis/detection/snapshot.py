@@ -15,7 +15,7 @@ import cv2
 import numpy as np
 
 from clearfast_gis.detection.detector import detect_anomalies
-from clearfast_gis.detection.features import blob_features
+from clearfast_gis.detection.features import RING_RADII, blob_features
 
 __all__ = ["Detection", "detect_snapshot", "gaussian_nan", "shrink"]
 
@@ -65,7 +65,7 @@ def detect_snapshot(
     epsilon: float = 0.01,
     polarity: str = "hot",
     min_score: float = 0.0,
-    ring_radii: tuple[float, float] = (1.5, 2.5),
+    ring_radii: tuple[float, float] = RING_RADII,
     smooth_px: float = 0.0,
     scale: int = 1,
 ) -> list[Detection]:

@@ -9,8 +9,16 @@ from functools import partial
 import numpy as np
 
 from clearfast_gis.detection import blob_features, detect_anomalies
+from clearfast_gis.detection.classify import AT_DIAMETER_M
 from clearfast_gis.detection.clutter import image_clutter_k
 from clearfast_gis.detection.compact import split_oversized
+from clearfast_gis.detection.deep import (
+    core_polarity,
+    deep_cores,
+    stack_match,
+    with_core_support,
+)
+from clearfast_gis.detection.screening import MIN_DIAMETER_M
 from clearfast_gis.detection.stack import as_scan_stack
 from clearfast_gis.progress import NULL_PROGRESS, Progress
 
@@ -103,7 +111,9 @@ def detect_on_mosaics(stack_c: np.ndarray, times_s: np.ndarray, transform, pixel
                       level: int | None, gamma: float | None, max_anomalies: int,
                       level_fraction: float = 0.5, gamma_fraction: float | None = None,
                       progress: Progress = NULL_PROGRESS,
-                      threshold_snr: float | None = None) -> tuple[np.ndarray, list]:
+                      threshold_snr: float | None = None,
+                      deep_templates_k: np.ndarray | None = None,
+                      deep_radius_m: float | None = None) -> tuple[np.ndarray, list]:
     """The morphological detector on mosaics, and blob features.
 
     Parameters
@@ -129,13 +139,21 @@ def detect_on_mosaics(stack_c: np.ndarray, times_s: np.ndarray, transform, pixel
         Combination threshold as a fraction of the covering images when ``gamma`` is None
         (None: OR).
     max_anomalies : int
-        Keep the highest-scoring ones.
+        Keep the highest-scoring blobs of the detector (the deep cores come on top).
     threshold_snr : float or None
         Cap of each image's stretch cut at this many times its clutter
         (:func:`clearfast_gis.detection.clutter.image_clutter_k`); None: the stretch alone.
         The stretch cut is half the top percentile of the hat image: on a day whose mines
         give a few tenths of a kelvin among markers and vegetation of several kelvins it lies
         above a mine that stands 5-8 sigma above the clutter.
+    deep_templates_k : float (T, N), optional
+        Modelled contrast of a buried object per template and scan, K
+        (:func:`clearfast_gis.thermal.daycontrast.reference_curves` at
+        :data:`clearfast_gis.detection.deep.DEEP_DEPTHS_M`): the stack's matched filter then
+        adds the deep cores (:func:`clearfast_gis.detection.deep.deep_cores`) the per-scan
+        detector missed or swallowed into an oversized blob. None: no deep search.
+    deep_radius_m : float, optional
+        Radius of the templates' object, m (with ``deep_templates_k``).
 
     Returns
     -------
@@ -157,9 +175,24 @@ def detect_on_mosaics(stack_c: np.ndarray, times_s: np.ndarray, transform, pixel
     split = split_by_cores(det.labels, det.votes, det.level)
     split = split_oversized(split, source, disk_px(d1_m, pixel_size_m),
                             disk_px(d2_m, pixel_size_m), d1_m / pixel_size_m)
+    if deep_templates_k is not None:
+        if deep_radius_m is None:
+            raise ValueError("deep_templates_k needs deep_radius_m")
+        radius_px = deep_radius_m / pixel_size_m
+        match = stack_match(source, deep_templates_k, radius_px)
+        split, cores = deep_cores(split, match, radius_px, d1_m / pixel_size_m,
+                                  spacing_px=AT_DIAMETER_M[1] / pixel_size_m,
+                                  min_area_px=np.pi * (0.5 * MIN_DIAMETER_M / pixel_size_m) ** 2)
+        det = with_core_support(det, split, cores,
+                                core_polarity(source, cores, radius_px, match.sigma_k))
+    deep = {label for label, _, _ in cores} if deep_templates_k is not None else set()
     feats = blob_features(split, source, times_s=times_s, transform=transform,
                           pixel_size_m=pixel_size_m, detection=det, longitude_deg=longitude_deg)
-    feats = sorted(feats, key=lambda f: (-f.score, f.id))[:max_anomalies]
+    # the cap ranks the detector's blobs; the deep cores, few by construction and weak in
+    # any one scan, come on top of it
+    feats = sorted((f for f in feats if f.id not in deep),
+                   key=lambda f: (-f.score, f.id))[:max_anomalies] \
+        + [f for f in feats if f.id in deep]
     labels = np.zeros(split.shape, dtype=np.int32)
     renumbered = []
     for new_id, f in enumerate(feats, start=1):

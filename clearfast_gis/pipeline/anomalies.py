@@ -7,6 +7,8 @@ import json
 
 import numpy as np
 
+from clearfast_gis.detection.clutter import background_levels
+from clearfast_gis.detection.deep import DEEP_DEPTHS_M
 from clearfast_gis.detection.likelihood import screen_and_rank
 from clearfast_gis.detection.markers import markers_in_mosaics, split_markers
 from clearfast_gis.detection.voting import detect_on_mosaics
@@ -18,12 +20,17 @@ from clearfast_gis.pipeline import stages
 from clearfast_gis.pipeline.scanjob import scan_part
 from clearfast_gis.pipeline.stages import Characterisation, Detection, RunContext
 from clearfast_gis.pipeline.state import StageState
+from clearfast_gis.thermal import forcing_from_weather
 from clearfast_gis.thermal.daycontrast import (
     PEAK_LIFT_SIGMA,
+    REFERENCE_RADIUS_M,
     SHOW_SNR,
     contrast_noise_k,
     day_contrast,
+    reference_curves,
 )
+from clearfast_gis.thermal.forcing import Forcing
+from clearfast_gis.thermal.materials import Soil
 from clearfast_gis.thermal.sitesoil import characterise, site_soil
 
 
@@ -33,6 +40,18 @@ def _mosaics_digest(mosaics: StageState, scans: list[int]) -> str:
 
     files = [mosaics.files(scan_part(s)) for s in scans]
     return hashlib.sha256(json.dumps(files, sort_keys=True).encode()).hexdigest()[:20]
+
+
+def _site(c: RunContext, times_s: np.ndarray, background_c: np.ndarray
+          ) -> tuple[Forcing, Soil, float, float, float]:
+    """The site's weather and soil (:func:`clearfast_gis.thermal.sitesoil.site_soil`) for scans
+    at ``times_s`` (UTC epoch s) whose background is ``background_c`` (degrees C, (N,)):
+    forcing, soil, soil diffusivity and its sigma (m2/s), grass cover (0-1)."""
+    ctx, logs = c[stages.READ].ctx, c[stages.READ].report.logs
+    forcing = forcing_from_weather(ctx.weather)
+    canopy = float(ctx.survey.manifest["site"].get("vegetation_cover", 0.0))
+    soil, alpha, sigma = site_soil(logs.soil, forcing, times_s, background_c, canopy)
+    return forcing, soil, alpha, sigma, canopy
 
 
 def detect(c: RunContext) -> Detection:
@@ -52,11 +71,17 @@ def detect(c: RunContext) -> Detection:
     times = np.array([scan_records[s]["time_s"] for s in scans])
     lon = float(read.ctx.survey.manifest["site"]["longitude_deg"])
     stack = mosaic_stack(c.products, scans, decode_once=True)  # decoded by the footprint's
+    background, _ = background_levels(stack, np.zeros(stack.shape, dtype=np.int32),
+                                      read.grid.pixel_size)
+    forcing, soil, _, _, canopy = _site(c, times, background)
     labels, feats = detect_on_mosaics(stack, times, stack.transform, read.grid.pixel_size, lon,
                                       o.d1_m, o.d2_m, o.epsilon, o.level, o.gamma,
                                       o.max_anomalies, level_fraction=o.level_fraction,
                                       gamma_fraction=o.gamma_fraction, progress=c.progress,
-                                      threshold_snr=o.threshold_snr)
+                                      threshold_snr=o.threshold_snr,
+                                      deep_templates_k=reference_curves(
+                                          forcing, soil, times, DEEP_DEPTHS_M, canopy),
+                                      deep_radius_m=REFERENCE_RADIUS_M)
     ids, xy = list(read.marker_ids), read.marker_xy
     feats, _ = split_markers(feats, ids, xy)
     matches = markers_in_mosaics(stack, read.grid, ids, xy)
@@ -66,9 +91,6 @@ def detect(c: RunContext) -> Detection:
 def characterise_suspects(c: RunContext) -> Characterisation:
     """The ``characterisation`` stage: the site's soil, then depth and diffusivity of every
     suspect with the thermal model."""
-    from clearfast_gis.detection.clutter import background_levels
-    from clearfast_gis.thermal import forcing_from_weather
-
     det = c[stages.DETECTION]
     if det.kept is not None:
         return Characterisation()
@@ -76,13 +98,11 @@ def characterise_suspects(c: RunContext) -> Characterisation:
         return Characterisation(notes=("thermal characterisation switched off",))
     if not det.features:
         return Characterisation()
-    ctx, logs = c[stages.READ].ctx, c[stages.READ].report.logs
-    forcing = forcing_from_weather(ctx.weather)
+    ctx = c[stages.READ].ctx
     background, clutter_k = background_levels(det.stack, det.labels,
                                               c[stages.READ].grid.pixel_size)
     site = ctx.survey.manifest["site"]
-    canopy = float(site.get("vegetation_cover", 0.0))
-    soil, alpha, sigma = site_soil(logs.soil, forcing, det.times_s, background, canopy)
+    forcing, soil, alpha, sigma, canopy = _site(c, det.times_s, background)
     inversions = characterise(det.features, det.times_s, forcing, soil, progress=c.progress,
                               canopy=canopy)
     noise = contrast_noise_k(inversions, ctx.survey, clutter_k)

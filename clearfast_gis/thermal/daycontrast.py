@@ -150,15 +150,10 @@ def day_contrast(forcing: Forcing, soil: Soil, scan_time_s: np.ndarray, noise_k:
         Grass cover recorded for the site, 0-1: the mine lies under it
         (:mod:`clearfast_gis.thermal.canopy`); its contrast is seen times ``1 - canopy``.
     """
-    model = ObjectModel(soil, under_canopy(forcing, canopy), scan_time_s, REFERENCE_RADIUS_M)
-    seen = seen_share(canopy)
-    peaks, shares, curves = [], [], []
-    for d in depths_m:
-        obj = BuriedObject(REFERENCE_RADIUS_M, REFERENCE_HEIGHT_M, d, MATERIALS["tnt"])
-        curves.append(seen * (model.surface_at(obj, [0.0])[:, 0] - model.background_k))
-        c = np.abs(curves[-1])
-        peaks.append(float(np.max(c)))
-        shares.append(float(np.mean(DELIVERED_FRACTION * c >= show_snr * noise_k)))
+    curves = reference_curves(forcing, soil, scan_time_s, depths_m, canopy)
+    peaks = [float(np.max(np.abs(c))) for c in curves]
+    shares = [float(np.mean(DELIVERED_FRACTION * np.abs(c) >= show_snr * noise_k))
+              for c in curves]
     dt_h = np.diff(forcing.time_s, prepend=forcing.time_s[0]) / 3600.0
     rain = float(np.sum(forcing.rain_mm_h * dt_h))
     return DayContrast(np.asarray(depths_m, float), np.asarray(peaks), np.asarray(shares),
@@ -166,6 +161,19 @@ def day_contrast(forcing: Forcing, soil: Soil, scan_time_s: np.ndarray, noise_k:
                        clear_sky_index(forcing, lat_deg, lon_deg), rain,
                        DELIVERED_FRACTION, float(show_snr), float(show_share),
                        np.asarray(curves, float))
+
+
+def reference_curves(forcing: Forcing, soil: Soil, scan_time_s: np.ndarray,
+                     depths_m, canopy: float = 0.0) -> np.ndarray:
+    """The reference mine's modelled contrast (axis minus undisturbed surface), K, float64
+    (D, S): buried at each of the D ``depths_m`` (m, top of the mine), at each of the S
+    ``scan_time_s`` (UTC epoch s); ``forcing``, ``soil`` and ``canopy`` as for
+    :func:`day_contrast`."""
+    model = ObjectModel(soil, under_canopy(forcing, canopy), scan_time_s, REFERENCE_RADIUS_M)
+    seen = seen_share(canopy)
+    return np.array([seen * (model.surface_at(
+        BuriedObject(REFERENCE_RADIUS_M, REFERENCE_HEIGHT_M, d, MATERIALS["tnt"]), [0.0]
+    )[:, 0] - model.background_k) for d in depths_m], dtype=np.float64)
 
 
 def contrast_noise_k(inversions: dict, survey=None, clutter_k: float = float("nan")) -> float:
