@@ -7,6 +7,7 @@ import click
 from clearfast_gis.cli.options import (
     detection_options,
     mosaic_options,
+    no_invert_opt,
     progress_opt,
     resume_opt,
 )
@@ -24,7 +25,7 @@ from clearfast_gis.cli.options import (
               help="Run on this Dask distributed scheduler's workers instead of locally.")
 @mosaic_options
 @detection_options
-@click.option("--no-invert", is_flag=True, help="Skip the depth/diffusivity estimation.")
+@no_invert_opt
 @resume_opt
 @progress_opt
 @click.pass_context

@@ -4,13 +4,18 @@ from __future__ import annotations
 
 import click
 
-from clearfast_gis.cli.options import detection_options, make_progress, progress_opt
+from clearfast_gis.cli.options import (
+    detection_options,
+    make_progress,
+    no_invert_opt,
+    progress_opt,
+)
 
 
 @click.command("detect", short_help="Re-run anomaly detection on existing mosaics.")
 @click.argument("products", type=click.Path(exists=True, file_okay=False))
 @detection_options
-@click.option("--no-invert", is_flag=True, help="Skip the depth/diffusivity estimation.")
+@no_invert_opt
 @progress_opt
 def command(products, no_invert, progress_mode, **params):
     """Detect anomalies again in PRODUCTS/mosaics with new detector parameters (D1, D2,

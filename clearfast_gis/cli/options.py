@@ -151,3 +151,10 @@ def stop_on_signals() -> Iterator[threading.Event]:
     finally:
         for sig, handler in previous.items():
             signal.signal(sig, handler)
+
+
+no_invert_opt = click.option(
+    "--no-invert", is_flag=True,
+    help="Skip the depth/diffusivity estimation and the deep search (both run the thermal "
+    "model).")
+"""The ``--no-invert`` switch of ``process``, ``detect`` and ``batch``."""

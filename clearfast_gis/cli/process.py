@@ -8,6 +8,7 @@ from clearfast_gis.cli.options import (
     detection_options,
     make_progress,
     mosaic_options,
+    no_invert_opt,
     products_opt,
     progress_opt,
     resume_opt,
@@ -22,7 +23,7 @@ from clearfast_gis.pipeline.stages import STAGE_NAMES
 @products_opt
 @mosaic_options
 @detection_options
-@click.option("--no-invert", is_flag=True, help="Skip the depth/diffusivity estimation.")
+@no_invert_opt
 @click.option("--from", "from_stage", type=click.Choice(STAGE_NAMES), default=None,
               help="Redo this stage and the ones after it even when up to date (the stages "
               "before it resume).")

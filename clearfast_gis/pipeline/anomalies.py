@@ -71,16 +71,20 @@ def detect(c: RunContext) -> Detection:
     times = np.array([scan_records[s]["time_s"] for s in scans])
     lon = float(read.ctx.survey.manifest["site"]["longitude_deg"])
     stack = mosaic_stack(c.products, scans, decode_once=True)  # decoded by the footprint's
-    background, _ = background_levels(stack, np.zeros(stack.shape, dtype=np.int32),
-                                      read.grid.pixel_size)
-    forcing, soil, _, _, canopy = _site(c, times, background)
+    deep_templates = None  # the deep search runs the thermal model: not without it
+    if o.invert:
+        background, _ = background_levels(stack, np.zeros(stack.shape, dtype=np.int32),
+                                          read.grid.pixel_size)
+        forcing, soil, _, _, canopy = _site(c, times, background)
+        deep_templates = reference_curves(forcing, soil, times, DEEP_DEPTHS_M, canopy)
+    else:
+        c.progress.message("deep search off: it needs the thermal model (--no-invert)")
     labels, feats = detect_on_mosaics(stack, times, stack.transform, read.grid.pixel_size, lon,
                                       o.d1_m, o.d2_m, o.epsilon, o.level, o.gamma,
                                       o.max_anomalies, level_fraction=o.level_fraction,
                                       gamma_fraction=o.gamma_fraction, progress=c.progress,
                                       threshold_snr=o.threshold_snr,
-                                      deep_templates_k=reference_curves(
-                                          forcing, soil, times, DEEP_DEPTHS_M, canopy),
+                                      deep_templates_k=deep_templates,
                                       deep_radius_m=REFERENCE_RADIUS_M)
     ids, xy = list(read.marker_ids), read.marker_xy
     feats, _ = split_markers(feats, ids, xy)
