@@ -16,6 +16,7 @@ MODULES = [
     "clearfast_gis.pipeline.run",
     "clearfast_gis.progress",
     "clearfast_gis.kernels",
+    "clearfast_gis.report.html",
 ]
 
 

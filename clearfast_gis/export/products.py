@@ -147,6 +147,7 @@ def write_anomaly_products(products: Path, ctx, survey, anomalies, records: list
     from clearfast_gis.export import default_styles, suspects_frame, write_geopackage
     from clearfast_gis.report import ReportData, write_report
     from clearfast_gis.report.figures import ContrastCurves, mosaic_panel_png, operating_curve_png
+    from clearfast_gis.report.html import diffusivity_text
 
     crs = f"EPSG:{epsg}"
     pixel = abs(transform.a)
@@ -235,7 +236,7 @@ def write_anomaly_products(products: Path, ctx, survey, anomalies, records: list
         ("known markers found (RMS offset)", _marker_fact(anomalies.markers)),
         ("seam balancing", "on (temperatures adjusted)" if options.seam_balance else "off"),
         ("soil diffusivity (thermocouples)",
-         f"{anomalies.soil_alpha_m2s:.2e} ± {anomalies.soil_alpha_sigma_m2s:.1e} m²/s"
+         diffusivity_text(anomalies.soil_alpha_m2s, anomalies.soil_alpha_sigma_m2s) + " mm²/s"
          if math.isfinite(anomalies.soil_alpha_m2s) else "n/a"),
         ("thermal contrast of the day (model of the logged weather, 10 cm AP mine)", day_fact),
     ]

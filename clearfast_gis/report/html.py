@@ -80,6 +80,19 @@ def figure_name(anomaly_id: str) -> str:
     return f"figures/contrast_{anomaly_id}.png"
 
 
+def diffusivity_text(alpha_m2s: float, sigma_m2s: float | None = None) -> str:
+    """A diffusivity (m²/s) as a planner reads it: in mm²/s, two significant digits, with its
+    1-sigma when it is known (as the QGIS form shows it); no unit in the text.
+
+    >>> diffusivity_text(1.47e-7, 3.1e-8)
+    '0.15 ± 0.031'
+    """
+    txt = f"{1e6 * alpha_m2s:#.2g}".rstrip(".")
+    if isinstance(sigma_m2s, float) and math.isfinite(sigma_m2s):
+        txt += f" ± {1e6 * sigma_m2s:#.2g}".rstrip(".")
+    return txt
+
+
 def _cell(rec: dict, key: str, fmt: str) -> str:
     v = rec.get(key)
     if v is None or (isinstance(v, float) and not math.isfinite(v)):
@@ -90,12 +103,8 @@ def _cell(rec: dict, key: str, fmt: str) -> str:
         if isinstance(s, float) and math.isfinite(s):
             txt += f" ± {100 * s:.1f}"
         return txt
-    if fmt == "mm2s":  # m²/s shown in mm²/s, two significant digits, as the QGIS form does
-        s = rec.get("diffusivity_sigma_m2s")
-        txt = f"{1e6 * v:#.2g}".rstrip(".")
-        if isinstance(s, float) and math.isfinite(s):
-            txt += f" ± {1e6 * s:#.2g}".rstrip(".")
-        return txt
+    if fmt == "mm2s":
+        return diffusivity_text(v, rec.get("diffusivity_sigma_m2s"))
     return html.escape(fmt.format(v))
 
 
@@ -137,8 +146,9 @@ def render_html(data: ReportData) -> str:
 <style>
 body {{ font-family: sans-serif; margin: 2em; max-width: 1400px; }}
 table {{ border-collapse: collapse; font-size: 0.85em; }}
-th, td {{ border: 1px solid #bbb; padding: 3px 6px; text-align: right; }}
-td {{ white-space: nowrap; }}
+th, td {{ border: 1px solid #bbb; padding: 3px 6px; text-align: left; }}
+.wide {{ overflow-x: auto; }}
+table.suspects td {{ white-space: nowrap; text-align: right; }}
 th {{ background: #eee; }}
 figure {{ display: inline-block; margin: 0.5em; }}
 .note {{ background: #fff4e0; border-left: 4px solid #e67e22; padding: 0.5em 1em; }}
@@ -159,7 +169,7 @@ never a confirmed hazard: {len(data.suspects)} suspects ({n_mine} cued as mines;
 alarms per m² (from the calibrated p_mine; docs/likelihood.md).</p>
 {curve_img}
 <h2>Suspects in priority order</h2>
-<table><tr>{head}</tr>{''.join(rows)}</table>
+<div class="wide"><table class="suspects"><tr>{head}</tr>{''.join(rows)}</table></div>
 <h2>Warnings</h2><ul>{warns}</ul>
 <h2>Survey and processing</h2><table>{facts}</table>
 <h2>Parameters</h2><table>{params}</table>

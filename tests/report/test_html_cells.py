@@ -36,3 +36,20 @@ def test_column_headers_name_their_units():
     heads = {k: t for k, t, _ in TABLE_COLUMNS}
     assert heads["diffusivity_m2s"] == "Diffusivity (mm²/s)"
     assert heads["depth_m"] == "Depth (cm)"
+
+
+def test_only_the_suspects_table_keeps_its_cells_on_one_line():
+    """The long facts (the day's contrast, ...) wrap in their column; the suspects' values
+    stay on one line in a table that scrolls sideways on a narrow screen."""
+    import re
+
+    from clearfast_gis.report.html import ReportData, render_html
+
+    long_fact = "modelled peak 1.37 K at 1 cm, " * 8
+    page = render_html(ReportData("S1", "site", 32636, 0.0, 3600.0,
+                                  [{"priority": 1, "anomaly_id": "S1-0001"}], b"",
+                                  facts=[("thermal contrast of the day", long_fact)]))
+    style = page[page.index("<style>"):page.index("</style>")]
+    assert re.findall(r"([^\n{}]*)\{[^}]*white-space: nowrap", style) == ["table.suspects td "]
+    assert '<div class="wide"><table class="suspects">' in page
+    assert "<table><tr><th>thermal contrast of the day</th>" in page
