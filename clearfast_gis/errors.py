@@ -47,3 +47,15 @@ class InvalidInput(ClearfastError):
 
 class OutputError(ClearfastError):
     """A product that cannot be written (permissions, disk full, ...)."""
+
+
+def more_problems(n_problems: int, hint: str = "") -> str:
+    """Suffix for a one-line error that shows the first of ``n_problems`` problems.
+
+    >>> more_problems(1), more_problems(2), more_problems(3, "run clearfast validate")
+    ('', ' (and 1 more problem)', ' (and 2 more problems: run clearfast validate)')
+    """
+    if n_problems <= 1:
+        return ""
+    rest = n_problems - 1
+    return f" (and {rest} more problem{'s' if rest > 1 else ''}{': ' + hint if hint else ''})"

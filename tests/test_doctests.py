@@ -17,6 +17,7 @@ MODULES = [
     "clearfast_gis.progress",
     "clearfast_gis.kernels",
     "clearfast_gis.report.html",
+    "clearfast_gis.errors",
 ]
 
 

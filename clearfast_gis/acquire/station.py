@@ -30,7 +30,7 @@ from pathlib import Path
 
 from clearfast_gis.acquire.mission import Blackbodies
 from clearfast_gis.acquire.soil import DEFAULT_DEPTHS_M
-from clearfast_gis.errors import InvalidInput
+from clearfast_gis.errors import InvalidInput, more_problems
 from clearfast_gis.survey._text import read_text
 from clearfast_gis.survey.manifest import DEFAULT_FILES, manifest_problems, parse_json
 from clearfast_gis.timeutil import format_utc
@@ -117,7 +117,7 @@ def read_setup(path: str | os.PathLike, label: str | None = None) -> StationSetu
             if f.split(".")[0] in SURVEY_KEYS or f == "(top level)"]
     if problems:
         field, msg = problems[0]
-        more = f" (and {len(problems) - 1} more problems)" if len(problems) > 1 else ""
+        more = more_problems(len(problems))
         raise InvalidInput(msg + more, label, field)
     bb = doc["blackbodies"]
     blackbodies = Blackbodies((float(bb["heated"]["pan_deg"]), float(bb["heated"]["tilt_deg"])),

@@ -10,7 +10,7 @@ import json
 from pathlib import Path
 
 from clearfast_gis import __version__
-from clearfast_gis.errors import InvalidInput
+from clearfast_gis.errors import InvalidInput, more_problems
 from clearfast_gis.geometry.gnss import platform_track, smooth_static_track, survey_epsg
 from clearfast_gis.mosaic.frames import SurveyContext
 from clearfast_gis.progress import NULL_PROGRESS, Progress
@@ -61,8 +61,7 @@ def open_context(survey_path: str | Path, progress: Progress = NULL_PROGRESS,
     report = validate_survey(survey_path, station_profile=station_profile)
     if not report.valid:
         first = report.problems[0].line()
-        more = f" (and {len(report.problems) - 1} more problems: run clearfast validate)" \
-            if len(report.problems) > 1 else ""
+        more = more_problems(len(report.problems), "run clearfast validate")
         raise InvalidInput(first + more)
     for w in report.warnings:
         progress.message(f"warning: {w.line()}")

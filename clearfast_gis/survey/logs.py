@@ -40,11 +40,15 @@ class SoilLog:
         Thermocouple depths below the surface, metres, increasing.
     temp_c : float64 (T, D)
         Temperatures, degrees C; NaN where the logger wrote NAN or nothing.
+    columns : tuple of str
+        The file's column of each depth (same order as ``depth_m``), for messages; empty
+        for a log that did not come from a file.
     """
 
     time_s: np.ndarray
     depth_m: np.ndarray
     temp_c: np.ndarray
+    columns: tuple[str, ...] = ()
 
 
 @dataclass(frozen=True)
@@ -121,7 +125,8 @@ def parse_soil_log(text: str, label: str = "soil.csv",
             temp[k, j] = to_float(cell(row, j + 1, label, line, col), label, line, col,
                                   allow_nan=True)
     order = np.argsort(depths)
-    return SoilLog(time_s=t, depth_m=np.asarray(depths)[order], temp_c=temp[:, order])
+    return SoilLog(time_s=t, depth_m=np.asarray(depths)[order], temp_c=temp[:, order],
+                   columns=tuple(header[1 + int(j)] for j in order))
 
 
 #: soil temperature columns whose name states the depth (``Tsoil_5cm_Avg``, ``TC_10cm``,
@@ -178,7 +183,8 @@ def _parse_soil_toa5(text: str, label: str, profile: StationProfile | None) -> S
             raw = to_float(cell(row, i, label, line, names[i]), label, line, names[i],
                            allow_nan=True)
             temp[k, j] = scale * raw + offset
-    return SoilLog(time_s=t, depth_m=np.array([depths[c] for c in cols]), temp_c=temp)
+    return SoilLog(time_s=t, depth_m=np.array([depths[c] for c in cols]), temp_c=temp,
+                   columns=tuple(names[i] for i in idx))
 
 
 def read_soil_log(path: str | os.PathLike, label: str | None = None,

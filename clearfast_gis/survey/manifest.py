@@ -14,7 +14,7 @@ from pathlib import Path, PurePosixPath
 from typing import Any
 
 from clearfast_gis.atomic import write_text
-from clearfast_gis.errors import InvalidInput
+from clearfast_gis.errors import InvalidInput, more_problems
 from clearfast_gis.survey._text import read_text
 from clearfast_gis.survey.schema import schema_errors
 from clearfast_gis.timeutil import parse_utc
@@ -98,7 +98,7 @@ def _load_checked(path: str | os.PathLike, schema: str, label: str | None) -> di
     problems = manifest_problems(doc, schema)
     if problems:
         field, msg = problems[0]
-        more = f" (and {len(problems) - 1} more problems)" if len(problems) > 1 else ""
+        more = more_problems(len(problems))
         raise InvalidInput(msg + more, label, field)
     return doc
 

@@ -397,7 +397,8 @@ def validate_survey(path: str | os.PathLike, gnss_gap_s: float = 10.0,
             first = 5 if txt.lstrip('\ufeff"').startswith("TOA5") else 2  # after the header
             lines = np.arange(soil.time_s.size) + first
             for j, depth in enumerate(soil.depth_m):
-                for f in check_series("soil_temp_c", f"{depth:g} m", soil.time_s,
+                column = soil.columns[j] if soil.columns else f"{depth:g} m"
+                for f in check_series("soil_temp_c", column, soil.time_s,
                                       soil.temp_c[:, j], lines, "deg C"):
                     ck.problem(files["soil"], f"line {f.line}", f.text())
     for key, parser, what in (("blackbody_log", parse_blackbody_log, "blackbody temperatures"),):

@@ -164,6 +164,13 @@ def _soil_garbage(s):
     _replace_line(s / "soil.csv", 2, "2026-11-15T00:10:00Z,hot,1,2,3,4")
 
 
+def _soil_hot(s):
+    lines = (s / "soil.csv").read_text().splitlines()
+    cells = lines[3].split(",")
+    cells[3] = "999.0"
+    _replace_line(s / "soil.csv", 3, ",".join(cells))
+
+
 def _mission_mismatch(s):
     _edit_json(s / "mission.json", lambda d: d["camera"].__setitem__("resolution", [32, 24]))
 
@@ -203,6 +210,8 @@ PROBLEMS = {
     "blackbody": (_missing_bb, "blackbody/frames.csv: blackbody: event 1 band 0: no frames of "
                                "blackbody 2"),
     "soil": (_soil_garbage, "soil.csv: line 3: T_0.020m_C: expected a number, got 'hot'"),
+    "soil_range": (_soil_hot, "soil.csv: line 4: T_0.100m_C: 1 value(s) outside -40..85 deg C, "
+                              "first line 4: 999 deg C (wrong column or unit?)"),
     "mission": (_mission_mismatch, "mission.json: camera.resolution: [32, 24] differs from "
                                    "survey.json camera.resolution [16, 12]"),
 }
