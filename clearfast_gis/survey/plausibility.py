@@ -22,6 +22,9 @@ RANGES: dict[str, tuple[float, float]] = {
     "sky_lw_wm2": (40.0, 600.0),
     "rain_mm": (0.0, 300.0),
     "soil_temp_c": (-40.0, 85.0),
+    # field blackbodies: an ambient plate and a heated one (extended-area sources reach
+    # +125 to +150 deg C); below -40 deg C nothing in the survey works
+    "blackbody_temp_c": (-40.0, 150.0),
 }
 
 #: largest difference of a station's pressure from the standard atmosphere at the site's
@@ -40,7 +43,8 @@ STUCK_QUANTITIES = ("air_temp_c", "pressure_hpa", "soil_temp_c")
 #: a value this far from both neighbours (in the same direction), while they agree, is a
 #: spike; neighbours must lie within SPIKE_WINDOW_S of it
 SPIKES: dict[str, float] = {"air_temp_c": 8.0, "rh_pct": 40.0, "pressure_hpa": 15.0,
-                            "soil_temp_c": 5.0, "sky_lw_wm2": 150.0}
+                            "soil_temp_c": 5.0, "sky_lw_wm2": 150.0,
+                            "blackbody_temp_c": 5.0}
 SPIKE_WINDOW_S = 3600.0
 
 

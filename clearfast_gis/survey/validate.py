@@ -409,6 +409,11 @@ def validate_survey(path: str | os.PathLike, gnss_gap_s: float = 10.0,
                     ck.problem(files[key], "", "no records")
                 order(files[key], lg.time_s)
                 coverage(files[key], lg.time_s, what)
+                lines = np.arange(lg.time_s.size) + 2  # after the header
+                for column in ("bb1_c", "bb2_c"):
+                    for f in check_series("blackbody_temp_c", column, lg.time_s,
+                                          getattr(lg, column), lines, "deg C"):
+                        ck.problem(files[key], f"line {f.line}", f.text())
     if "markers" in files and (mk := ck.text(files["markers"], "markers")) is not None:
         with ck.guard(files["markers"]):
             parsed["markers"] = parse_markers(mk, files["markers"])

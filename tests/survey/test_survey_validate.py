@@ -160,6 +160,15 @@ def _missing_bb(s):
     (s / "blackbody/frames.csv").write_text("\n".join(keep) + "\n")
 
 
+def _blackbody_value(line: int, value: str):
+    def breaker(s):
+        lines = (s / "blackbody/temperatures.csv").read_text().splitlines()
+        cells = lines[line - 1].split(",")
+        cells[1] = value
+        _replace_line(s / "blackbody/temperatures.csv", line - 1, ",".join(cells))
+    return breaker
+
+
 def _soil_garbage(s):
     _replace_line(s / "soil.csv", 2, "2026-11-15T00:10:00Z,hot,1,2,3,4")
 
@@ -209,6 +218,12 @@ PROBLEMS = {
     "weather_nan": (_weather_all_nan, "weather.dat: air_temp_c: all values missing (NAN)"),
     "blackbody": (_missing_bb, "blackbody/frames.csv: blackbody: event 1 band 0: no frames of "
                                "blackbody 2"),
+    "blackbody_range": (_blackbody_value(3, "522.0"), "blackbody/temperatures.csv: line 3: "
+                        "bb1_c: 1 value(s) outside -40..150 deg C, first line 3: 522 deg C "
+                        "(wrong column or unit?)"),
+    "blackbody_spike": (_blackbody_value(4, "99.0"), "blackbody/temperatures.csv: line 4: "
+                        "bb1_c: 1 spike(s) of more than 5 deg C from both neighbours, first "
+                        "line 4: 99 deg C"),
     "soil": (_soil_garbage, "soil.csv: line 3: T_0.020m_C: expected a number, got 'hot'"),
     "soil_range": (_soil_hot, "soil.csv: line 4: T_0.100m_C: 1 value(s) outside -40..85 deg C, "
                               "first line 4: 999 deg C (wrong column or unit?)"),
