@@ -15,6 +15,7 @@ from clearfast_gis.errors import InvalidInput
 from clearfast_gis.geometry.gnss import PlatformTrack
 from clearfast_gis.geometry.pose import CameraPose, pose_from_ptu
 from clearfast_gis.mosaic.build import FrameInput
+from clearfast_gis.parallel import thread_imap
 from clearfast_gis.radiometry.calibration import CalibrationEvent
 from clearfast_gis.radiometry.camera import CameraRadiometry
 from clearfast_gis.radiometry.stage import (
@@ -126,7 +127,9 @@ def scan_frames(ctx: SurveyContext, scan: int, air_at, atmosphere: bool = True,
     raw_all = [survey.read_scan(scan, b) for b in range(n_bands)]
     pos_all = [fr.position[survey.scan_rows(scan, b)] for b in range(n_bands)]
     gains: list[dict] = [{} for _ in range(n_bands)]  # calibration images, once per scan
-    for start in range(0, keep.size, chunk):
+
+    def calibrate(start: int) -> tuple[np.ndarray, list[CameraPose], np.ndarray]:
+        """Positions, poses and (P, B, H, W) apparent temperatures of one block of frames."""
         idx = slice(start, min(start + chunk, keep.size))
         block_pos = keep[idx]
         block_poses = poses[idx]
@@ -153,6 +156,12 @@ def scan_frames(ctx: SurveyContext, scan: int, air_at, atmosphere: bool = True,
             if b > 0 and not _is_identity(ctx.band_offsets[b]):
                 for k in range(dst.shape[0]):
                     dst[k] = warp_conformal(dst[k], ctx.band_offsets[b], dst[k].shape)
+        return block_pos, block_poses, stack
+
+    # blocks calibrated on threads (the kernels release the GIL), yielded in scan order: each
+    # frame's values do not depend on the block or thread that computed it
+    for block_pos, block_poses, stack in thread_imap(calibrate, range(0, keep.size, chunk),
+                                                     ahead=2):
         for k, (pos, pose) in enumerate(zip(block_pos, block_poses, strict=True)):
             yield FrameInput(int(pos), stack[k], pose)
 

@@ -13,6 +13,7 @@ from dataclasses import replace
 import numpy as np
 
 from clearfast_gis.errors import InvalidInput
+from clearfast_gis.parallel import thread_imap
 from clearfast_gis.progress import NULL_PROGRESS, Progress
 from clearfast_gis.registration.conformal import register_conformal
 from clearfast_gis.registration.transform import ConformalTransform
@@ -84,14 +85,20 @@ def estimate_band_offsets(
     progress = progress or NULL_PROGRESS
     progress.start("band co-registration", (len(stacks) - 1) * n_frames)
     offsets = [replace(ConformalTransform.identity(center), n_samples=n_frames)]
+    pairs = [(b, p) for b in range(1, len(stacks)) for p in range(n_frames)]
+
+    def register(pair: tuple[int, int]) -> ConformalTransform:
+        b, p = pair
+        return register_conformal(stacks[0][p], stacks[b][p], max_shift_px=max_shift_px,
+                                  max_angle_deg=max_angle_deg if conformal else 0.0, bins=bins)
+
+    # the pairs registered on threads (the MI kernels release the GIL), results in pair order
+    results = []
+    for (b, p), t in zip(pairs, thread_imap(register, pairs), strict=True):
+        results.append(t)
+        progress.advance(1, band=b, frame=p)
     for b in range(1, len(stacks)):
-        results = []
-        for p in range(n_frames):
-            results.append(register_conformal(
-                stacks[0][p], stacks[b][p], max_shift_px=max_shift_px,
-                max_angle_deg=max_angle_deg if conformal else 0.0, bins=bins))
-            progress.advance(1, band=b, frame=p)
-        offsets.append(_median_transform(results, center))
+        offsets.append(_median_transform(results[(b - 1) * n_frames:b * n_frames], center))
     progress.close()
     return offsets
 

@@ -48,6 +48,20 @@ def test_recovers_translation_offsets() -> None:
     assert offsets[2].n_samples == 4
 
 
+def test_same_offsets_on_any_thread_count(monkeypatch) -> None:
+    """The frames are registered on threads; the offsets are the same bits on one."""
+    truths = [ConformalTransform.identity(CENTER),
+              ConformalTransform(0.0, 0.7, -1.2, center_px=CENTER),
+              ConformalTransform(0.0, -1.6, 0.3, center_px=CENTER)]
+    stacks = _bands(truths, 4)
+    got = {}
+    for threads in (1, 2):
+        monkeypatch.setenv("CLEARFAST_THREADS", str(threads))
+        got[threads] = estimate_band_offsets(stacks)
+    assert repr(got[1]) == repr(got[2])  # every field to the last bit (repr round-trips)
+    assert rms_displacement(truths[2], got[2][2], SHAPE) < 0.05
+
+
 def test_conformal_offsets_from_lists_and_apply() -> None:
     truths = [ConformalTransform.identity(CENTER),
               ConformalTransform(math.radians(0.8), 0.9, 1.4, center_px=CENTER)]
