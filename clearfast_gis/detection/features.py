@@ -36,6 +36,7 @@ Definitions (also in docs/detection.md):
 from __future__ import annotations
 
 import warnings
+from collections.abc import Collection
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -179,6 +180,43 @@ class _SquareMean:
         return np.sqrt(mean)
 
 
+def signal_amplitude(rms_k: np.ndarray, ring_spread_k: np.ndarray) -> np.ndarray:
+    """The RMS deviation from the ring with the ring's own spread taken out in quadrature.
+
+    A pixel's RMS deviation from the ring mean over the images is ``sqrt(A**2 + s**2)``:
+    the object's amplitude ``A`` and the spread ``s`` that any background pixel shows
+    (sensor noise and texture), whose mean square is that of the ring's standard deviation
+    over the images. Taken out, a faint object's half maximum is the object's, not a level
+    the noise reaches: under 40 % grass a 10 cm AP mine at 5 cm (0.05-0.09 K against
+    0.05 K of spread), found by the stack's matched filter, had a raw half-maximum
+    footprint 17-22 cm across and was ranked below a vegetation edge by its size.
+
+    Parameters
+    ----------
+    rms_k : float (h, w)
+        ``S``, the RMS deviation from the ring over the images, K (NaN without data).
+    ring_spread_k : float (N,) or (N, B)
+        The ring's standard deviation per image, K (NaN where a scan did not see it).
+
+    Returns
+    -------
+    float32 (h, w)
+        ``sqrt(max(S**2 - mean(s**2), 0))``, K; ``S`` itself when the spread is unknown.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> signal_amplitude(np.array([[0.05, 0.13]]), np.array([0.05, 0.05])).round(3)
+    array([[0.  , 0.12]], dtype=float32)
+    """
+    spread = np.asarray(ring_spread_k, dtype=np.float64)
+    spread = spread[np.isfinite(spread)]
+    floor = float(np.mean(spread**2)) if spread.size else 0.0
+    rms = np.asarray(rms_k, dtype=np.float64)
+    with np.errstate(invalid="ignore"):
+        return np.sqrt(np.maximum(rms * rms - floor, 0.0)).astype(np.float32)
+
+
 def half_max_footprint(amp: np.ndarray, own: np.ndarray, origin: tuple[int, int]
                        ) -> tuple[np.ndarray, np.ndarray]:
     """Pixels of a blob's half-maximum thermal footprint.
@@ -214,6 +252,9 @@ def half_max_footprint(amp: np.ndarray, own: np.ndarray, origin: tuple[int, int]
         rr, cc = np.nonzero(own)
         return rr + r0, cc + c0
     peak = np.percentile(vals, 95)
+    if not peak > 0:  # no amplitude above the background's: the blob itself
+        rr, cc = np.nonzero(own)
+        return rr + r0, cc + c0
     above = np.nan_to_num(amp, nan=0.0) >= 0.5 * peak
     lab, _ = ndimage.label(above)
     # seed at the blob's strongest pixel: a blob that took in neighbouring texture keeps the
@@ -270,6 +311,7 @@ def blob_features(
     longitude_deg: float | None = None,
     ring_radii: tuple[float, float] = RING_RADII,
     noise: str = "ring",
+    faint: Collection[int] = (),
 ) -> list[AnomalyFeatures]:
     """Measure every labelled anomaly.
 
@@ -300,6 +342,11 @@ def blob_features(
         Inner and outer radius of the background ring, in equivalent radii of the blob.
     noise : {'ring', 'image'}
         Noise estimate of the score: the ring's standard deviation or the image's.
+    faint : collection of int
+        Labels of objects below the per-scan cut in every scan (the cores of the stack's
+        matched filter, :mod:`clearfast_gis.detection.deep`): their half-maximum footprint
+        is taken on the amplitude above the ring's spread (:func:`signal_amplitude`), as
+        their RMS deviation is at the noise's level.
 
     Returns
     -------
@@ -370,7 +417,10 @@ def blob_features(
         for blob in blobs:
             r0, r1, c0, c1 = blob.window
             own = labels[r0:r1, c0:c1] == blob.region.label
-            blob.fr, blob.fc = half_max_footprint(blob.amp.rms(), own, (r0, c0))
+            amp = blob.amp.rms()
+            if blob.region.label in faint:
+                amp = signal_amplitude(amp, blob.noise)
+            blob.fr, blob.fc = half_max_footprint(amp, own, (r0, c0))
         for i, per_blob in enumerate(map_scans(centres, source)):
             for blob, centre in zip(blobs, per_blob, strict=True):
                 blob.centre[i] = centre
