@@ -5,12 +5,15 @@ Definitions (also in docs/detection.md):
 - centroid: mean (row, col) of the half-maximum footprint's pixels (below; pixel centres at
   integers): the object, even when the blob took in neighbouring texture; map centroid
   ``transform * (col + 0.5, row + 0.5)`` (the rasterio affine of the grid maps pixel corners).
+  A faint core of the stack's matched filter (``faint``) is placed at its disc's centre.
 - area: pixel count of the detected blob (and ``count * pixel_size_m**2``).
 - diameter: equivalent diameter ``sqrt(4 A / pi)`` of the half-maximum thermal footprint
   (:func:`half_max_footprint`: the connected region around the centroid where the pixel's RMS
   deviation from the background ring over the scans exceeds half the blob's peak). The
   thresholded blob also takes in blur and thermal halo and overstates the size;
-  ``blob_diameter_px`` keeps the blob's own equivalent diameter.
+  ``blob_diameter_px`` keeps the blob's own equivalent diameter. For a faint core the
+  amplitude is taken above the background's spread (:func:`signal_amplitude`), and the
+  footprint is never smaller than the core's disc.
 - circularity (paper §6): mean of the minor/major axis ratio of the blob's inertia ellipse and
   the compactness ``4 pi A / P**2``. P is scikit-image's ``regionprops`` perimeter (boundary
   pixels of the 4-connected contour weighted 1, sqrt(2) or (1+sqrt(2))/2 by configuration); on
@@ -189,7 +192,7 @@ def signal_amplitude(rms_k: np.ndarray, ring_spread_k: np.ndarray) -> np.ndarray
     over the images. Taken out, a faint object's half maximum is the object's, not a level
     the noise reaches: under 40 % grass a 10 cm AP mine at 5 cm (0.05-0.09 K against
     0.05 K of spread), found by the stack's matched filter, had a raw half-maximum
-    footprint 17-22 cm across and was ranked below a vegetation edge by its size.
+    footprint 17-23 cm across and was ranked below a vegetation edge by its size.
 
     Parameters
     ----------
@@ -272,6 +275,13 @@ def half_max_footprint(amp: np.ndarray, own: np.ndarray, origin: tuple[int, int]
     return rr + r0, cc + c0
 
 
+def _union(rows_a: np.ndarray, cols_a: np.ndarray, rows_b: np.ndarray, cols_b: np.ndarray,
+           width: int) -> tuple[np.ndarray, np.ndarray]:
+    """The pixels of two sets (rows, cols) together, each once, in raster order."""
+    flat = np.union1d(np.asarray(rows_a) * width + cols_a, np.asarray(rows_b) * width + cols_b)
+    return flat // width, flat % width
+
+
 @dataclass
 class _Blob:
     """One labelled blob's geometry and the series measured on it, scan by scan."""
@@ -291,6 +301,7 @@ class _Blob:
     centre: np.ndarray
     fr: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=np.intp))
     fc: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=np.intp))
+    faint: bool = False
 
 
 def _nan_stats(values: np.ndarray, n_min: int, stat) -> np.ndarray:
@@ -346,7 +357,8 @@ def blob_features(
         Labels of objects below the per-scan cut in every scan (the cores of the stack's
         matched filter, :mod:`clearfast_gis.detection.deep`): their half-maximum footprint
         is taken on the amplitude above the ring's spread (:func:`signal_amplitude`), as
-        their RMS deviation is at the noise's level.
+        their RMS deviation is at the noise's level; the footprint takes in their blob (the
+        core's disc, centred on the matched filter's peak), which is also their centroid.
 
     Returns
     -------
@@ -418,9 +430,13 @@ def blob_features(
             r0, r1, c0, c1 = blob.window
             own = labels[r0:r1, c0:c1] == blob.region.label
             amp = blob.amp.rms()
-            if blob.region.label in faint:
+            blob.faint = blob.region.label in faint
+            if blob.faint:
                 amp = signal_amplitude(amp, blob.noise)
             blob.fr, blob.fc = half_max_footprint(amp, own, (r0, c0))
+            if blob.faint:  # never smaller than the disc the matched filter found
+                blob.fr, blob.fc = _union(blob.fr, blob.fc, blob.rows, blob.cols,
+                                          labels.shape[1])
         for i, per_blob in enumerate(map_scans(centres, source)):
             for blob, centre in zip(blobs, per_blob, strict=True):
                 blob.centre[i] = centre
@@ -437,7 +453,10 @@ def _features(blob: _Blob, n: int, b: int, ps: float, transform, times_s, longit
     diameter = 2.0 * blob.r_eq
     circ, ratio, compact = _circularity(region)
     fwhm_diameter = float(np.sqrt(4.0 * blob.fr.size / np.pi))
-    row, col = float(blob.fr.mean()), float(blob.fc.mean())
+    # a faint core's place is the matched filter's peak (its disc's centre): over the disc and
+    # every scan, steadier than the few pixels of its amplitude's half maximum
+    row, col = (blob.row, blob.col) if blob.faint else (float(blob.fr.mean()),
+                                                         float(blob.fc.mean()))
     centre, ring, noise_k = blob.centre, blob.ring, blob.noise
     contrast = centre - ring
     sigma = noise_k if image_noise is None else image_noise

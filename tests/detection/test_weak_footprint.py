@@ -3,7 +3,7 @@
 A 10 cm mine at 5 cm under grass peaks at a few hundredths of a kelvin against 0.05 K of
 pixel noise; the RMS deviation from the ring over the scans is then as large on the noise
 around it as on the object, and the raw half maximum took in the noise: the footprint came
-out 16-17 cm across and the mine was ranked below a vegetation edge by its size."""
+out 17-23 cm across and the mine was ranked below a vegetation edge by its size."""
 
 from __future__ import annotations
 
@@ -61,13 +61,14 @@ def test_a_weak_mine_keeps_its_size():
     for seed in range(10):
         stack = _stack(0.08, seed=seed)
         f, = blob_features(_core_labels(), stack, pixel_size_m=PIXEL_M, faint={1})
-        assert f.diameter_px == pytest.approx(DIAMETER_PX, rel=0.3)
-        assert np.hypot(f.row - CENTRE[0], f.col - CENTRE[1]) <= 1.0
+        # at least the core's disc (5.17 px equivalent), not run into the noise
+        assert 0.95 * DIAMETER_PX <= f.diameter_px <= 1.15 * DIAMETER_PX
+        assert (f.row, f.col) == CENTRE  # placed at the core's disc centre
         new.append(f.diameter_px)
         # not marked faint (the RMS itself), the footprint runs into the noise
         g, = blob_features(_core_labels(), stack, pixel_size_m=PIXEL_M)
         raw.append(g.diameter_px)
-    assert np.median(new) == pytest.approx(DIAMETER_PX, rel=0.15)
+    assert np.median(new) == pytest.approx(DIAMETER_PX, rel=0.08)
     assert np.median(raw) > 1.5 * DIAMETER_PX and min(raw) > 1.1 * DIAMETER_PX
 
 
