@@ -43,7 +43,8 @@ from clearfast_gis.thermal.inversion import Inversion
 
 __all__ = ["DISC_RING_GAIN", "DISC_RING_GAIN_SIGMA", "MAX_DEEP_SIGMA_M", "PROFILE_DEPTHS_M",
            "MAX_WIDE_RATIO", "SHAPE_DEPTH_RELATIVE", "DepthProfile", "characterise_cores",
-           "deep_inversion", "depth_profile", "model_sigma_m", "wide_ratio"]
+           "deep_inversion", "depth_profile", "model_sigma_m", "wide_ratio",
+           "with_core_depths"]
 
 #: Depths of the profile's reference curves, m (top of the object): from the shallow end of
 #: the deep search to below its deepest template.
@@ -251,6 +252,21 @@ def deep_inversion(profile: DepthProfile, noise_k: float, ratio: float = 0.0) ->
                      residual_rms_k=profile.residual_rms_k, noise_k=float(noise_k),
                      peak_contrast_k=float(np.max(np.abs(seen))) if seen.size else 0.0,
                      correlation=math.nan, model_contrast_k=profile.model_k)
+
+
+def with_core_depths(inversions: dict[int, Inversion], cores: dict[int, Inversion]
+                     ) -> dict[int, Inversion]:
+    """The characterisation with each deep core's depth (``cores``, from
+    :func:`characterise_cores`) in place of the general inversion's (``inversions``), unless
+    the core's is flagged and the general one is ``ok`` (an AT mine found as a core: the
+    inversion models the object by its footprint, the profile by the AP type). Both by
+    feature id; a new dict."""
+    out = dict(inversions)
+    for key, inv in cores.items():
+        general = inversions.get(key)
+        if inv.status == "ok" or general is None or general.status != "ok":
+            out[key] = inv
+    return out
 
 
 def characterise_cores(features: list, templates_k: np.ndarray,

@@ -9,7 +9,11 @@ import numpy as np
 
 from clearfast_gis.detection.clutter import background_levels
 from clearfast_gis.detection.deep import DEEP_DEPTHS_M
-from clearfast_gis.detection.deep_depth import PROFILE_DEPTHS_M, characterise_cores
+from clearfast_gis.detection.deep_depth import (
+    PROFILE_DEPTHS_M,
+    characterise_cores,
+    with_core_depths,
+)
 from clearfast_gis.detection.likelihood import screen_and_rank
 from clearfast_gis.detection.markers import markers_in_mosaics, split_markers
 from clearfast_gis.detection.voting import detect_on_mosaics
@@ -114,8 +118,9 @@ def characterise_suspects(c: RunContext) -> Characterisation:
                               canopy=canopy)
     noise = contrast_noise_k(inversions, ctx.survey, clutter_k)
     if any(f.core_contrast_k is not None for f in det.features):
-        inversions.update(characterise_cores(det.features, reference_curves(
-            forcing, soil, det.times_s, PROFILE_DEPTHS_M, canopy)))
+        inversions = with_core_depths(inversions, characterise_cores(
+            det.features, reference_curves(forcing, soil, det.times_s, PROFILE_DEPTHS_M,
+                                           canopy)))
     o = c.options
     day = day_contrast(forcing, soil, det.times_s, noise, float(site["latitude_deg"]),
                        float(site["longitude_deg"]),

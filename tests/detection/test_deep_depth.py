@@ -18,6 +18,7 @@ from clearfast_gis.detection.deep_depth import (
     depth_profile,
     model_sigma_m,
     wide_ratio,
+    with_core_depths,
 )
 from tests.detection.test_classify import _feat
 
@@ -122,3 +123,15 @@ def test_inputs_are_checked():
     few[:3] = 0.1
     with pytest.raises(ValueError):
         depth_profile(few, np.ones(TIMES_S.size), TEMPLATES)
+
+
+def test_a_core_keeps_the_general_inversion_only_where_that_one_is_ok():
+    profile = depth_profile(_observed(0.07, 0.03, 8), np.full(TIMES_S.size, 0.03), TEMPLATES)
+    ok = deep_inversion(profile, 0.03)
+    flagged = dataclasses.replace(ok, status="not_characterised")
+    general_ok = dataclasses.replace(ok, depth_m=0.075, alpha_m2s=1e-7, status="ok")
+    general_flagged = dataclasses.replace(general_ok, status="weak_contrast")
+    out = with_core_depths({1: general_ok, 2: general_flagged, 3: general_ok, 9: general_ok},
+                           {1: ok, 2: flagged, 3: flagged, 4: flagged})
+    assert out[1] is ok and out[2] is flagged and out[3] is general_ok and out[4] is flagged
+    assert out[9] is general_ok
