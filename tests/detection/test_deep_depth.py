@@ -8,8 +8,10 @@ import dataclasses
 import numpy as np
 import pytest
 
+from clearfast_gis.detection.deep import core_contrast
 from clearfast_gis.detection.deep_depth import (
     DISC_RING_GAIN,
+    DISC_RING_GAIN_SIGMA,
     MAX_DEEP_SIGMA_M,
     MAX_WIDE_RATIO,
     PROFILE_DEPTHS_M,
@@ -20,7 +22,17 @@ from clearfast_gis.detection.deep_depth import (
     wide_ratio,
     with_core_depths,
 )
+from clearfast_gis.thermal import clear_sky_forcing
+from clearfast_gis.thermal.daycontrast import (
+    REFERENCE_HEIGHT_M,
+    REFERENCE_RADIUS_M,
+    reference_curves,
+)
+from clearfast_gis.thermal.forward import BuriedObject, ObjectModel
+from clearfast_gis.thermal.materials import MATERIALS
+from clearfast_gis.thermal.soils import soil_of_type
 from tests.detection.test_classify import _feat
+from tests.detection.test_curve import DAY0_S, LAT_DEG, LON_DEG, SCANS_S
 
 DAMPING_M = 0.12  # damping depth of the diurnal wave in sand, m
 TIMES_S = np.arange(48) * 1800.0  # 48 scans over a day
@@ -135,3 +147,67 @@ def test_a_core_keeps_the_general_inversion_only_where_that_one_is_ok():
                            {1: ok, 2: flagged, 3: flagged, 4: flagged})
     assert out[1] is ok and out[2] is flagged and out[3] is general_ok and out[4] is flagged
     assert out[9] is general_ok
+
+
+PIXEL_M = 0.01  # mosaic cell, m
+HALF_PX = 20  # the rendered window is (41, 41) cells around the mine's axis
+
+
+@pytest.fixture(scope="module")
+def sand_day():
+    """The demo's six scans of a clear November day on dry sand: the reference mine's
+    profile curves (D, 6) K, and a function giving a buried AP mine's disc-ring contrast
+    per scan (6,) K as the deep search measures it on an image of its modelled surface."""
+    forcing = clear_sky_forcing(LAT_DEG, LON_DEG, DAY0_S, 86400.0)
+    soil = soil_of_type("sand", 0.1)
+    model = ObjectModel(soil, forcing, SCANS_S, REFERENCE_RADIUS_M)
+    y, x = np.mgrid[-HALF_PX:HALF_PX + 1, -HALF_PX:HALF_PX + 1]
+    radii = np.hypot(x, y).ravel() * PIXEL_M
+
+    def measured(depth_m: float) -> np.ndarray:
+        mine = BuriedObject(REFERENCE_RADIUS_M, REFERENCE_HEIGHT_M, depth_m, MATERIALS["tnt"])
+        images = (model.surface_at(mine, radii) - model.background_k[:, None]).reshape(
+            SCANS_S.size, *x.shape).astype(np.float32)
+        return core_contrast(images, [(1, HALF_PX, HALF_PX)], REFERENCE_RADIUS_M / PIXEL_M)[:, 0]
+
+    return reference_curves(forcing, soil, SCANS_S, PROFILE_DEPTHS_M), measured
+
+
+@pytest.mark.parametrize(("depth_m", "score", "min_ok"), [
+    (0.06, 10.0, 0.95), (0.07, 10.0, 0.95), (0.08, 10.0, 0.95), (0.07, 6.0, 0.4)])
+def test_a_modelled_deep_mine_is_characterised_or_flagged(sand_day, depth_m, score, min_ok):
+    """An AP mine at 6-8 cm in the thermal model, measured as disc minus ring on an image of
+    its surface, with noise that puts it ``score`` sigmas over the six scans (the deep
+    scenario's mines: 6-15): its depth within 1.5 cm on average and within its sigmas;
+    at the deep search's cut (6) a fair share characterised, none confidently wrong."""
+    templates, measured = sand_day
+    curve = measured(depth_m)
+    # what the disc and ring keep of the axis contrast: the gain's prior holds it
+    axis = templates[int(np.argmin(np.abs(DEPTHS - depth_m)))]
+    gain = float(curve @ axis / (axis @ axis))
+    assert abs(gain - DISC_RING_GAIN) <= 2 * DISC_RING_GAIN_SIGMA
+    noise = float(np.linalg.norm(curve)) / score
+    rows = []
+    for seed in range(40):
+        seen = curve + np.random.default_rng(seed).normal(0.0, noise, curve.size)
+        inv = deep_inversion(depth_profile(seen, np.full(curve.size, noise), templates), noise)
+        rows.append((inv.status == "ok", inv.depth_m - depth_m, inv.depth_sigma_m))
+    ok = np.array([r[0] for r in rows])
+    error = np.abs([r[1] for r in rows])[ok]
+    sigma = np.array([r[2] for r in rows])[ok]
+    assert ok.mean() >= min_ok
+    assert np.all(error <= 0.02)  # never confidently wrong
+    assert np.mean(error) <= 0.01
+    assert np.mean(error <= sigma) >= 0.5 and np.mean(error <= 2 * sigma) >= 0.9
+
+
+@pytest.mark.parametrize("depth_m", [0.01, 0.20])
+def test_a_modelled_mine_off_the_profile_is_flagged(sand_day, depth_m):
+    """A mine shallower or deeper than the profile's depths (3-16 cm) meets its end: its
+    depth is not characterised, however clean the curve."""
+    templates, measured = sand_day
+    curve = measured(depth_m)
+    noise = 1e-3 * float(np.abs(curve).max())
+    profile = depth_profile(curve, np.full(curve.size, noise), templates)
+    assert profile.at_end
+    assert deep_inversion(profile, noise).status == "not_characterised"
