@@ -51,10 +51,10 @@ __all__ = ["DISC_RING_GAIN", "DISC_RING_GAIN_SIGMA", "MAX_DEEP_SIGMA_M", "PROFIL
 PROFILE_DEPTHS_M = tuple(float(d) for d in np.round(np.arange(0.03, 0.1601, 0.0025), 4))
 
 #: Prior of the gain: the core's disc-minus-ring contrast on the mosaics over the modelled
-#: axis contrast of the reference mine at its true depth. AP mines at 5-10 cm at their true
-#: positions gave 0.40-0.56 (deep scenario seed 20, trial seed 5; BENCHMARKS.md "Deep cores'
-#: depth from the curve's shape"): the disc mean is below the axis value and the ring holds
-#: part of the halo.
+#: axis contrast of the reference mine at its true depth. The 18 AP mines at 6-8 cm of the deep
+#: scenario's seeds 20-22 at their true positions gave 0.30-0.59, median 0.48
+#: (``benchmarks/deep_depth.py``; the thermal model's own mine on an unblurred image 0.62-0.66):
+#: the disc mean is below the axis value, the ring holds part of the halo, the mosaics blur.
 DISC_RING_GAIN = 0.5
 
 #: 1-sigma width of the gain's prior: 25 %, twice the spread measured, for other AP types
@@ -75,9 +75,9 @@ MAX_DEEP_SIGMA_M = 0.01
 
 #: A core whose disc-ring contrast at the largest mine type's radius is more than this times
 #: (rms over the scans) its contrast at the reference radius is no AP-sized object alone: an
-#: AT mine (its ring at the AP radius lies inside it: 3.6-4.6 for the AT mine at 7 cm of the
+#: AT mine (its ring at the AP radius lies inside it: 3.6-4.8 for the AT mine at 7 cm of the
 #: deep scenario's seeds 20-22), or a mine beside something stronger. The AP template does
-#: not give its depth. AP mines at 6-8 cm alone: 0.29-0.81.
+#: not give its depth. AP mines at 6-8 cm of those surveys: 0.28-0.84 (17 of 18).
 MAX_WIDE_RATIO = 1.5
 
 
