@@ -97,9 +97,11 @@ def main() -> None:
           "| fit sigma cm | sigma cm | abs(error) / sigma | status |\n"
           "|---|---|---|---|---|---|---|---|---|---|")
     for survey, products in zip(args.pairs[::2], args.pairs[1::2], strict=True):
+        folder = Path(survey).resolve()
+        name = folder.parent.name if folder.name == "survey" else folder.name
         for r in survey_rows(survey, products, args.min_depth):
             z = abs(r["estimate_m"] - r["depth_m"]) / r["sigma_m"]
-            print(f"| {Path(survey).parent.name or survey} | {r['id']} | "
+            print(f"| {name} | {r['id']} | "
                   f"{100 * r['depth_m']:.0f} | {r['gain']:.2f} | {r['ratio']:.2f} | "
                   f"{100 * r['estimate_m']:.2f} | {100 * r['fit_sigma_m']:.2f} | "
                   f"{100 * r['sigma_m']:.2f} | {z:.2f} | {r['status']} |")

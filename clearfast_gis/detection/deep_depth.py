@@ -52,8 +52,9 @@ PROFILE_DEPTHS_M = tuple(float(d) for d in np.round(np.arange(0.03, 0.1601, 0.00
 
 #: Prior of the gain: the core's disc-minus-ring contrast on the mosaics over the modelled
 #: axis contrast of the reference mine at its true depth. The 18 AP mines at 6-8 cm of the deep
-#: scenario's seeds 20-22 at their true positions gave 0.30-0.59, median 0.48
-#: (``benchmarks/deep_depth.py``; the thermal model's own mine on an unblurred image 0.62-0.66):
+#: scenario's seeds 20-22 at their true positions gave 0.30-0.59, median 0.48, the six at
+#: 5-10 cm of trial seed 5 0.47-0.55 (``benchmarks/deep_depth.py``; the thermal model's own mine
+#: on an unblurred image 0.62-0.66):
 #: the disc mean is below the axis value, the ring holds part of the halo, the mosaics blur.
 DISC_RING_GAIN = 0.5
 
@@ -76,8 +77,9 @@ MAX_DEEP_SIGMA_M = 0.01
 #: A core whose disc-ring contrast at the largest mine type's radius is more than this times
 #: (rms over the scans) its contrast at the reference radius is no AP-sized object alone: an
 #: AT mine (its ring at the AP radius lies inside it: 3.6-4.8 for the AT mine at 7 cm of the
-#: deep scenario's seeds 20-22), or a mine beside something stronger. The AP template does
-#: not give its depth. AP mines at 6-8 cm of those surveys: 0.28-0.84 (17 of 18).
+#: deep scenario's seeds 20-22, 2.8-5.6 for the AT mines at 5-15 cm of trial seed 5), or a mine
+#: beside something stronger. The AP template does not give its depth. AP mines at 5-10 cm of
+#: those surveys: 0.21-0.86 (23 of 24).
 MAX_WIDE_RATIO = 1.5
 
 
