@@ -42,7 +42,7 @@ from clearfast_gis.detection.multiscale import robust_sigma
 from clearfast_gis.detection.stack import as_scan_stack, map_scans
 
 __all__ = ["DEEP_DEPTHS_M", "MIN_EXPLAINED", "MIN_SCAN_SHARE", "MIN_SCORE", "StackMatch",
-           "core_polarity",
+           "core_contrast", "core_polarity",
            "deep_cores", "disc_ring_contrast", "stack_match", "with_core_support"]
 
 #: Depths of the buried-object templates, m: below the shallow mines the per-scan detector
@@ -279,27 +279,22 @@ def deep_cores(labels: np.ndarray, match: StackMatch, radius_px: float,
     return out, cores
 
 
-def core_polarity(stack, cores: list[tuple[int, int, int]], radius_px: float,
-                  sigma_k: np.ndarray, min_sigma: float = SUPPORT_SIGMA) -> np.ndarray:
-    """Per scan, the sign of each core's disc-ring contrast where it reaches ``min_sigma``
-    of that scan's spread (the scans that support it, as the per-scan maps L_i do for the
-    detector's blobs).
+def core_contrast(stack, cores: list[tuple[int, int, int]], radius_px: float) -> np.ndarray:
+    """Per scan, each core's disc-ring contrast (:func:`disc_ring_contrast`) at its peak.
 
     Parameters
     ----------
     stack : ScanStack, or float32 (N, H, W) or (N, B, H, W)
+        Apparent temperature, K or degrees C.
     cores : list of (label, row, col)
         From :func:`deep_cores`.
     radius_px : float
         Disc radius, pixels.
-    sigma_k : float (N,)
-        Each scan's spread of the disc-ring contrast (:attr:`StackMatch.sigma_k`), K.
-    min_sigma : float
 
     Returns
     -------
-    int8 (N, C)
-        +1 warm, -1 cool, 0 not supported, per scan and core.
+    float64 (N, C)
+        Contrast, K (NaN where the scan has too little data there).
     """
     source = as_scan_stack(stack)
     reach = int(np.ceil(RING_RADII[1] * radius_px)) + 1
@@ -314,10 +309,30 @@ def core_polarity(stack, cores: list[tuple[int, int, int]], radius_px: float,
                                         radius_px)[r - r0, c - c0]
         return out
 
-    contrast = np.array(list(map_scans(one_scan, source))).reshape(source.n_scans,
-                                                                    len(cores))
+    return np.array(list(map_scans(one_scan, source))).reshape(source.n_scans, len(cores))
+
+
+def core_polarity(contrast_k: np.ndarray, sigma_k: np.ndarray,
+                  min_sigma: float = SUPPORT_SIGMA) -> np.ndarray:
+    """Per scan, the sign of each core's disc-ring contrast where it reaches ``min_sigma``
+    of that scan's spread (the scans that support it, as the per-scan maps L_i do for the
+    detector's blobs).
+
+    Parameters
+    ----------
+    contrast_k : float (N, C)
+        The cores' contrast per scan (:func:`core_contrast`), K.
+    sigma_k : float (N,)
+        Each scan's spread of the disc-ring contrast (:attr:`StackMatch.sigma_k`), K.
+    min_sigma : float
+
+    Returns
+    -------
+    int8 (N, C)
+        +1 warm, -1 cool, 0 not supported, per scan and core.
+    """
     with np.errstate(invalid="ignore"):
-        z = contrast / np.asarray(sigma_k, dtype=np.float64)[:, None]
+        z = np.asarray(contrast_k) / np.asarray(sigma_k, dtype=np.float64)[:, None]
     z = np.nan_to_num(z)
     return (np.where(z >= min_sigma, 1, 0) - np.where(z <= -min_sigma, 1, 0)).astype(np.int8)
 

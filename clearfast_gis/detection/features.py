@@ -65,6 +65,10 @@ class AnomalyFeatures:
     """Features of one anomaly (see the module notes for the definitions).
 
     Shapes: N scans, B bands; the series are (N,) for a single-band stack, else (N, B).
+    A deep core of the stack's matched filter (:mod:`clearfast_gis.detection.deep`) also
+    carries ``core_contrast_k``, its disc-ring contrast at the peak per scan (N,), K,
+    ``core_wide_contrast_k``, the same at the largest mine type's radius (N,), K, and
+    ``core_noise_k``, each scan's spread of the first (N,), K; None for the detector's blobs.
     """
 
     id: int
@@ -89,6 +93,9 @@ class AnomalyFeatures:
     score: float
     bbox: tuple[int, int, int, int] = field(default=(0, 0, 0, 0))
     blob_diameter_px: float = float("nan")
+    core_contrast_k: np.ndarray | None = None
+    core_wide_contrast_k: np.ndarray | None = None
+    core_noise_k: np.ndarray | None = None
 
 
 def summary_polarity(polarity_per_scan: np.ndarray, times_s: np.ndarray | None = None,

@@ -13,6 +13,7 @@ from clearfast_gis.detection.classify import AT_DIAMETER_M
 from clearfast_gis.detection.clutter import image_clutter_k
 from clearfast_gis.detection.compact import curve_cores, split_oversized
 from clearfast_gis.detection.deep import (
+    core_contrast,
     core_polarity,
     deep_cores,
     stack_match,
@@ -20,6 +21,7 @@ from clearfast_gis.detection.deep import (
 )
 from clearfast_gis.detection.screening import MIN_DIAMETER_M
 from clearfast_gis.detection.stack import as_scan_stack
+from clearfast_gis.minetypes import MINE_TYPES
 from clearfast_gis.progress import NULL_PROGRESS, Progress
 
 
@@ -196,12 +198,18 @@ def detect_on_mosaics(stack_c: np.ndarray, times_s: np.ndarray, transform, pixel
         match = stack_match(source, deep_templates_k, radius_px)
         split, cores = deep_cores(split, match, **geometry)
         cores = shallow + cores
-        det = with_core_support(det, split, cores,
-                                core_polarity(source, cores, radius_px, match.sigma_k))
-    deep = {label for label, _, _ in cores} if deep_templates_k is not None else set()
+        contrast = core_contrast(source, cores, radius_px)
+        wide = core_contrast(source, cores, max(t.radius_m for t in MINE_TYPES) / pixel_size_m)
+        det = with_core_support(det, split, cores, core_polarity(contrast, match.sigma_k))
+    deep = {label: j for j, (label, _, _) in enumerate(cores)} \
+        if deep_templates_k is not None else {}
     feats = blob_features(split, source, times_s=times_s, transform=transform,
                           pixel_size_m=pixel_size_m, detection=det, longitude_deg=longitude_deg,
-                          faint=deep)
+                          faint=set(deep))
+    feats = [dataclasses.replace(f, core_contrast_k=contrast[:, deep[f.id]],
+                                 core_wide_contrast_k=wide[:, deep[f.id]],
+                                 core_noise_k=match.sigma_k) if f.id in deep else f
+             for f in feats]
     # the cap ranks the detector's blobs; the deep cores, few by construction and weak in
     # any one scan, come on top of it
     feats = sorted((f for f in feats if f.id not in deep),

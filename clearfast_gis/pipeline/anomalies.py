@@ -10,6 +10,11 @@ import numpy as np
 from clearfast_gis.detection.clutter import background_levels
 from clearfast_gis.detection.curve import MAX_MATCH_DEPTH_M
 from clearfast_gis.detection.deep import DEEP_DEPTHS_M
+from clearfast_gis.detection.deep_depth import (
+    PROFILE_DEPTHS_M,
+    characterise_cores,
+    with_core_depths,
+)
 from clearfast_gis.detection.likelihood import screen_and_rank
 from clearfast_gis.detection.markers import markers_in_mosaics, split_markers
 from clearfast_gis.detection.voting import detect_on_mosaics
@@ -100,7 +105,9 @@ def detect(c: RunContext) -> Detection:
 
 def characterise_suspects(c: RunContext) -> Characterisation:
     """The ``characterisation`` stage: the site's soil, then depth and diffusivity of every
-    suspect with the thermal model."""
+    suspect with the thermal model; the deep cores' depth from their curve's shape
+    (:mod:`clearfast_gis.detection.deep_depth`; the day's contrast noise is the general
+    inversion's)."""
     det = c[stages.DETECTION]
     if det.kept is not None:
         return Characterisation()
@@ -116,6 +123,10 @@ def characterise_suspects(c: RunContext) -> Characterisation:
     inversions = characterise(det.features, det.times_s, forcing, soil, progress=c.progress,
                               canopy=canopy)
     noise = contrast_noise_k(inversions, ctx.survey, clutter_k)
+    if any(f.core_contrast_k is not None for f in det.features):
+        inversions = with_core_depths(inversions, characterise_cores(
+            det.features, reference_curves(forcing, soil, det.times_s, PROFILE_DEPTHS_M,
+                                           canopy)))
     o = c.options
     day = day_contrast(forcing, soil, det.times_s, noise, float(site["latitude_deg"]),
                        float(site["longitude_deg"]),

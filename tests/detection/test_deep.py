@@ -7,6 +7,7 @@ import numpy as np
 
 from clearfast_gis.detection.deep import (
     MIN_EXPLAINED,
+    core_contrast,
     core_polarity,
     deep_cores,
     disc_ring_contrast,
@@ -73,7 +74,7 @@ def test_a_deep_mine_in_a_warm_patch_is_found():
     assert labels[118, 100] == label and labels[100, 100] == 1
     # the core's own scans: warm by day, cool by night, in most scans (against it at most
     # near the curve's zero crossings)
-    pol = core_polarity(stack, cores, RADIUS_PX, match.sigma_k)[:, 0]
+    pol = core_polarity(core_contrast(stack, cores, RADIUS_PX), match.sigma_k)[:, 0]
     sign = np.sign(_curve(0.8))
     assert np.sum(pol == sign) >= N_SCANS // 2 and np.sum(pol * sign < 0) <= 2
     # through the detector on mosaics: a suspect of its own, with supporting scans
