@@ -10,7 +10,6 @@ import pytest
 MODULES = [
     "clearfast_gis.solar",
     "clearfast_gis.detection.voting",
-    "clearfast_gis.detection.features",
     "clearfast_gis.attitude.adjust",
     "clearfast_gis.attitude.neighbours",
     "clearfast_gis.export.layout",

@@ -7,39 +7,19 @@ into one blob much larger than any mine; the blob's centre is then the patch's, 
 mine's. The plain top-hat (by opening, without reconstruction) is blind to the smooth cap and
 keeps the full contrast of anything narrower than D1: inside an oversized blob, its
 time-averaged normalised response picks out the compact objects, which become anomalies of
-their own (:func:`split_oversized`).
-
-One cut on that time average cannot tell a weak mine from the texture of a grass patch: under
-40 % grass a 2 cm AP mine inside a warm bare patch averages 3.8 noise units, texture on a
-patch's cap 1-3. What does tell them apart is the shape of the curve over the day. Inside an
-oversized blob, :func:`curve_cores` takes the stack's matched filter against the modelled
-curves of a shallow mine (:func:`clearfast_gis.detection.deep.stack_match` with the reference
-mine at 0-5 cm): a local peak whose curve the template explains (``explained`` >=
-:data:`MIN_CURVE_EXPLAINED`, score >= :data:`~clearfast_gis.detection.deep.MIN_SCORE`) is an
-object of its own, whatever its time average.
+their own.
 """
 
 from __future__ import annotations
-
-import dataclasses
 
 import cv2
 import numpy as np
 from scipy import ndimage
 
-from clearfast_gis.detection.deep import StackMatch, deep_cores
 from clearfast_gis.detection.morphology import disk_footprint
 from clearfast_gis.detection.multiscale import robust_sigma
 from clearfast_gis.detection.selection import median
 from clearfast_gis.detection.stack import as_scan_stack, map_scans
-
-#: Smallest share of the stack's energy beyond noise that the shallow template explains at a
-#: core inside an oversized blob: stricter than the deep search's
-#: (:data:`clearfast_gis.detection.deep.MIN_EXPLAINED`, 0.85), since a warm patch's cap and
-#: loosened soil follow a mine's curve roughly. A 0.1 K mine with the template's own curve on
-#: a warm patch of 1 K gives 0.98 (``tests/detection/test_curve_split.py``); measured
-#: on the demo's grass surveys in BENCHMARKS.md ("Grass cover without losing mines").
-MIN_CURVE_EXPLAINED = 0.95
 
 
 def _compact_term(f: np.ndarray, kernel: np.ndarray) -> tuple[np.ndarray, np.ndarray] | None:
@@ -170,53 +150,3 @@ def split_oversized(labels: np.ndarray, stack, d1_px: float, d2_px: float,
             view[cores == k] = next_label
             next_label += 1
     return out
-
-
-def oversized_mask(labels: np.ndarray, max_diameter_px: float) -> np.ndarray:
-    """bool (H, W): the pixels of blobs whose equivalent diameter exceeds ``max_diameter_px``
-    (pixels; label 0 is background, never oversized)."""
-    areas = np.bincount(np.asarray(labels).ravel())
-    over = 2.0 * np.sqrt(areas / np.pi) > max_diameter_px
-    over[0] = False
-    return over[labels]
-
-
-def curve_cores(labels: np.ndarray, match: StackMatch, radius_px: float,
-                max_diameter_px: float, spacing_px: float, min_area_px: float = 0.0
-                ) -> tuple[np.ndarray, list[tuple[int, int, int]]]:
-    """Objects inside oversized blobs whose diurnal curve is a shallow mine's.
-
-    The cores of :func:`clearfast_gis.detection.deep.deep_cores` (a local peak of the
-    matched filter reaching its score and :data:`MIN_CURVE_EXPLAINED` explained, seen by
-    enough of the scans, away
-    from every kept blob and earlier core; a disc of ``radius_px`` cut out of the blob),
-    looked for only inside blobs too large to be a mine: on open ground the per-scan
-    detector finds a shallow mine, and the deep search runs after this split.
-
-    Parameters
-    ----------
-    labels : int (H, W)
-        Blobs after :func:`split_oversized` (0 = background).
-    match : StackMatch
-        The stack's matched filter against the modelled curves of the reference mine at
-        0-5 cm (:func:`clearfast_gis.detection.deep.stack_match`), same grid.
-    radius_px : float
-        The reference mine's radius, pixels (the core's disc).
-    max_diameter_px : float
-        Blobs with a larger equivalent diameter (pixels) are searched.
-    spacing_px : float
-        Side of the square a core is the largest score of, pixels.
-    min_area_px : float
-        Blobs smaller than this (pixels) are no object (as for the deep cores).
-
-    Returns
-    -------
-    labels : int32 (H, W)
-        The input's labels and one new label per core.
-    cores : list of (label, row, col)
-        Each core's label and peak pixel.
-    """
-    inside = oversized_mask(labels, max_diameter_px)
-    masked = dataclasses.replace(match, score=np.where(inside, match.score, np.nan))
-    return deep_cores(labels, masked, radius_px, max_diameter_px, spacing_px, min_area_px,
-                      min_explained=MIN_CURVE_EXPLAINED)

@@ -5,15 +5,12 @@ Definitions (also in docs/detection.md):
 - centroid: mean (row, col) of the half-maximum footprint's pixels (below; pixel centres at
   integers): the object, even when the blob took in neighbouring texture; map centroid
   ``transform * (col + 0.5, row + 0.5)`` (the rasterio affine of the grid maps pixel corners).
-  A faint core of the stack's matched filter (``faint``) is placed at its disc's centre.
 - area: pixel count of the detected blob (and ``count * pixel_size_m**2``).
 - diameter: equivalent diameter ``sqrt(4 A / pi)`` of the half-maximum thermal footprint
   (:func:`half_max_footprint`: the connected region around the centroid where the pixel's RMS
   deviation from the background ring over the scans exceeds half the blob's peak). The
   thresholded blob also takes in blur and thermal halo and overstates the size;
-  ``blob_diameter_px`` keeps the blob's own equivalent diameter. For a faint core the
-  amplitude is taken above the background's spread (:func:`signal_amplitude`), and the
-  footprint is never smaller than the core's disc.
+  ``blob_diameter_px`` keeps the blob's own equivalent diameter.
 - circularity (paper §6): mean of the minor/major axis ratio of the blob's inertia ellipse and
   the compactness ``4 pi A / P**2``. P is scikit-image's ``regionprops`` perimeter (boundary
   pixels of the 4-connected contour weighted 1, sqrt(2) or (1+sqrt(2))/2 by configuration); on
@@ -39,7 +36,6 @@ Definitions (also in docs/detection.md):
 from __future__ import annotations
 
 import warnings
-from collections.abc import Collection
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -190,43 +186,6 @@ class _SquareMean:
         return np.sqrt(mean)
 
 
-def signal_amplitude(rms_k: np.ndarray, ring_spread_k: np.ndarray) -> np.ndarray:
-    """The RMS deviation from the ring with the ring's own spread taken out in quadrature.
-
-    A pixel's RMS deviation from the ring mean over the images is ``sqrt(A**2 + s**2)``:
-    the object's amplitude ``A`` and the spread ``s`` that any background pixel shows
-    (sensor noise and texture), whose mean square is that of the ring's standard deviation
-    over the images. Taken out, a faint object's half maximum is the object's, not a level
-    the noise reaches: under 40 % grass a 10 cm AP mine at 5 cm (0.05-0.09 K against
-    0.05 K of spread), found by the stack's matched filter, had a raw half-maximum
-    footprint 17-23 cm across and was ranked below a vegetation edge by its size.
-
-    Parameters
-    ----------
-    rms_k : float (h, w)
-        ``S``, the RMS deviation from the ring over the images, K (NaN without data).
-    ring_spread_k : float (N,) or (N, B)
-        The ring's standard deviation per image, K (NaN where a scan did not see it).
-
-    Returns
-    -------
-    float32 (h, w)
-        ``sqrt(max(S**2 - mean(s**2), 0))``, K; ``S`` itself when the spread is unknown.
-
-    Examples
-    --------
-    >>> import numpy as np
-    >>> signal_amplitude(np.array([[0.05, 0.13]]), np.array([0.05, 0.05])).round(3)
-    array([[0.  , 0.12]], dtype=float32)
-    """
-    spread = np.asarray(ring_spread_k, dtype=np.float64)
-    spread = spread[np.isfinite(spread)]
-    floor = float(np.mean(spread**2)) if spread.size else 0.0
-    rms = np.asarray(rms_k, dtype=np.float64)
-    with np.errstate(invalid="ignore"):
-        return np.sqrt(np.maximum(rms * rms - floor, 0.0)).astype(np.float32)
-
-
 def half_max_footprint(amp: np.ndarray, own: np.ndarray, origin: tuple[int, int]
                        ) -> tuple[np.ndarray, np.ndarray]:
     """Pixels of a blob's half-maximum thermal footprint.
@@ -262,9 +221,6 @@ def half_max_footprint(amp: np.ndarray, own: np.ndarray, origin: tuple[int, int]
         rr, cc = np.nonzero(own)
         return rr + r0, cc + c0
     peak = np.percentile(vals, 95)
-    if not peak > 0:  # no amplitude above the background's: the blob itself
-        rr, cc = np.nonzero(own)
-        return rr + r0, cc + c0
     above = np.nan_to_num(amp, nan=0.0) >= 0.5 * peak
     lab, _ = ndimage.label(above)
     # seed at the blob's strongest pixel: a blob that took in neighbouring texture keeps the
@@ -280,13 +236,6 @@ def half_max_footprint(amp: np.ndarray, own: np.ndarray, origin: tuple[int, int]
         core = ids[np.argmax(counts)]
     rr, cc = np.nonzero(lab == core)
     return rr + r0, cc + c0
-
-
-def _union(rows_a: np.ndarray, cols_a: np.ndarray, rows_b: np.ndarray, cols_b: np.ndarray,
-           width: int) -> tuple[np.ndarray, np.ndarray]:
-    """The pixels of two sets (rows, cols) together, each once, in raster order."""
-    flat = np.union1d(np.asarray(rows_a) * width + cols_a, np.asarray(rows_b) * width + cols_b)
-    return flat // width, flat % width
 
 
 @dataclass
@@ -308,7 +257,6 @@ class _Blob:
     centre: np.ndarray
     fr: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=np.intp))
     fc: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=np.intp))
-    faint: bool = False
 
 
 def _nan_stats(values: np.ndarray, n_min: int, stat) -> np.ndarray:
@@ -329,7 +277,6 @@ def blob_features(
     longitude_deg: float | None = None,
     ring_radii: tuple[float, float] = RING_RADII,
     noise: str = "ring",
-    faint: Collection[int] = (),
 ) -> list[AnomalyFeatures]:
     """Measure every labelled anomaly.
 
@@ -360,12 +307,6 @@ def blob_features(
         Inner and outer radius of the background ring, in equivalent radii of the blob.
     noise : {'ring', 'image'}
         Noise estimate of the score: the ring's standard deviation or the image's.
-    faint : collection of int
-        Labels of objects below the per-scan cut in every scan (the cores of the stack's
-        matched filter, :mod:`clearfast_gis.detection.deep`): their half-maximum footprint
-        is taken on the amplitude above the ring's spread (:func:`signal_amplitude`), as
-        their RMS deviation is at the noise's level; the footprint takes in their blob (the
-        core's disc, centred on the matched filter's peak), which is also their centroid.
 
     Returns
     -------
@@ -436,14 +377,7 @@ def blob_features(
         for blob in blobs:
             r0, r1, c0, c1 = blob.window
             own = labels[r0:r1, c0:c1] == blob.region.label
-            amp = blob.amp.rms()
-            blob.faint = blob.region.label in faint
-            if blob.faint:
-                amp = signal_amplitude(amp, blob.noise)
-            blob.fr, blob.fc = half_max_footprint(amp, own, (r0, c0))
-            if blob.faint:  # never smaller than the disc the matched filter found
-                blob.fr, blob.fc = _union(blob.fr, blob.fc, blob.rows, blob.cols,
-                                          labels.shape[1])
+            blob.fr, blob.fc = half_max_footprint(blob.amp.rms(), own, (r0, c0))
         for i, per_blob in enumerate(map_scans(centres, source)):
             for blob, centre in zip(blobs, per_blob, strict=True):
                 blob.centre[i] = centre
@@ -460,10 +394,7 @@ def _features(blob: _Blob, n: int, b: int, ps: float, transform, times_s, longit
     diameter = 2.0 * blob.r_eq
     circ, ratio, compact = _circularity(region)
     fwhm_diameter = float(np.sqrt(4.0 * blob.fr.size / np.pi))
-    # a faint core's place is the matched filter's peak (its disc's centre): over the disc and
-    # every scan, steadier than the few pixels of its amplitude's half maximum
-    row, col = (blob.row, blob.col) if blob.faint else (float(blob.fr.mean()),
-                                                         float(blob.fc.mean()))
+    row, col = float(blob.fr.mean()), float(blob.fc.mean())
     centre, ring, noise_k = blob.centre, blob.ring, blob.noise
     contrast = centre - ring
     sigma = noise_k if image_noise is None else image_noise

@@ -11,7 +11,7 @@ import numpy as np
 from clearfast_gis.detection import blob_features, detect_anomalies
 from clearfast_gis.detection.classify import AT_DIAMETER_M
 from clearfast_gis.detection.clutter import image_clutter_k
-from clearfast_gis.detection.compact import curve_cores, split_oversized
+from clearfast_gis.detection.compact import split_oversized
 from clearfast_gis.detection.deep import (
     core_contrast,
     core_polarity,
@@ -115,9 +115,7 @@ def detect_on_mosaics(stack_c: np.ndarray, times_s: np.ndarray, transform, pixel
                       progress: Progress = NULL_PROGRESS,
                       threshold_snr: float | None = None,
                       deep_templates_k: np.ndarray | None = None,
-                      deep_radius_m: float | None = None,
-                      curve_templates_k: np.ndarray | None = None
-                      ) -> tuple[np.ndarray, list]:
+                      deep_radius_m: float | None = None) -> tuple[np.ndarray, list]:
     """The morphological detector on mosaics, and blob features.
 
     Parameters
@@ -158,11 +156,6 @@ def detect_on_mosaics(stack_c: np.ndarray, times_s: np.ndarray, transform, pixel
         detector missed or swallowed into an oversized blob. None: no deep search.
     deep_radius_m : float, optional
         Radius of the templates' object, m (with ``deep_templates_k``).
-    curve_templates_k : float (T, N), optional
-        Modelled contrast of the same object at 0-5 cm per template and scan, K (with
-        ``deep_templates_k``): before the deep search, the objects inside oversized blobs
-        whose curve is a shallow mine's are split out
-        (:func:`clearfast_gis.detection.compact.curve_cores`). None: not looked for.
 
     Returns
     -------
@@ -188,24 +181,17 @@ def detect_on_mosaics(stack_c: np.ndarray, times_s: np.ndarray, transform, pixel
         if deep_radius_m is None:
             raise ValueError("deep_templates_k needs deep_radius_m")
         radius_px = deep_radius_m / pixel_size_m
-        geometry = {"radius_px": radius_px, "max_diameter_px": d1_m / pixel_size_m,
-                    "spacing_px": AT_DIAMETER_M[1] / pixel_size_m,
-                    "min_area_px": np.pi * (0.5 * MIN_DIAMETER_M / pixel_size_m) ** 2}
-        shallow: list[tuple[int, int, int]] = []
-        if curve_templates_k is not None:
-            split, shallow = curve_cores(split, stack_match(source, curve_templates_k,
-                                                            radius_px), **geometry)
         match = stack_match(source, deep_templates_k, radius_px)
-        split, cores = deep_cores(split, match, **geometry)
-        cores = shallow + cores
+        split, cores = deep_cores(split, match, radius_px, d1_m / pixel_size_m,
+                                  spacing_px=AT_DIAMETER_M[1] / pixel_size_m,
+                                  min_area_px=np.pi * (0.5 * MIN_DIAMETER_M / pixel_size_m) ** 2)
         contrast = core_contrast(source, cores, radius_px)
         wide = core_contrast(source, cores, max(t.radius_m for t in MINE_TYPES) / pixel_size_m)
         det = with_core_support(det, split, cores, core_polarity(contrast, match.sigma_k))
     deep = {label: j for j, (label, _, _) in enumerate(cores)} \
         if deep_templates_k is not None else {}
     feats = blob_features(split, source, times_s=times_s, transform=transform,
-                          pixel_size_m=pixel_size_m, detection=det, longitude_deg=longitude_deg,
-                          faint=set(deep))
+                          pixel_size_m=pixel_size_m, detection=det, longitude_deg=longitude_deg)
     feats = [dataclasses.replace(f, core_contrast_k=contrast[:, deep[f.id]],
                                  core_wide_contrast_k=wide[:, deep[f.id]],
                                  core_noise_k=match.sigma_k) if f.id in deep else f

@@ -8,7 +8,6 @@ import json
 import numpy as np
 
 from clearfast_gis.detection.clutter import background_levels
-from clearfast_gis.detection.curve import MAX_MATCH_DEPTH_M
 from clearfast_gis.detection.deep import DEEP_DEPTHS_M
 from clearfast_gis.detection.deep_depth import (
     PROFILE_DEPTHS_M,
@@ -29,7 +28,6 @@ from clearfast_gis.pipeline.state import StageState
 from clearfast_gis.thermal import forcing_from_weather
 from clearfast_gis.thermal.daycontrast import (
     PEAK_LIFT_SIGMA,
-    REFERENCE_DEPTHS_M,
     REFERENCE_RADIUS_M,
     SHOW_SNR,
     contrast_noise_k,
@@ -78,15 +76,12 @@ def detect(c: RunContext) -> Detection:
     times = np.array([scan_records[s]["time_s"] for s in scans])
     lon = float(read.ctx.survey.manifest["site"]["longitude_deg"])
     stack = mosaic_stack(c.products, scans, decode_once=True)  # decoded by the footprint's
-    deep_templates = curve_templates = None  # they need the thermal model: not without it
+    deep_templates = None  # the deep search runs the thermal model: not without it
     if o.invert:
         background, _ = background_levels(stack, np.zeros(stack.shape, dtype=np.int32),
                                           read.grid.pixel_size)
         forcing, soil, _, _, canopy = _site(c, times, background)
         deep_templates = reference_curves(forcing, soil, times, DEEP_DEPTHS_M, canopy)
-        curve_templates = reference_curves(
-            forcing, soil, times, [d for d in REFERENCE_DEPTHS_M if d <= MAX_MATCH_DEPTH_M],
-            canopy)
     else:
         c.progress.message("deep search off: it needs the thermal model (--no-invert)")
     labels, feats = detect_on_mosaics(stack, times, stack.transform, read.grid.pixel_size, lon,
@@ -95,8 +90,7 @@ def detect(c: RunContext) -> Detection:
                                       gamma_fraction=o.gamma_fraction, progress=c.progress,
                                       threshold_snr=o.threshold_snr,
                                       deep_templates_k=deep_templates,
-                                      deep_radius_m=REFERENCE_RADIUS_M,
-                                      curve_templates_k=curve_templates)
+                                      deep_radius_m=REFERENCE_RADIUS_M)
     ids, xy = list(read.marker_ids), read.marker_xy
     feats, _ = split_markers(feats, ids, xy)
     matches = markers_in_mosaics(stack, read.grid, ids, xy)
