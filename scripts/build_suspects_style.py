@@ -38,6 +38,9 @@ os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
 REPO = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(REPO))
 
+from clearfast_gis.report.html import UNCONSTRAINED_TEXT  # noqa: E402
+
+
 def _mine_expression() -> str:
     from clearfast_gis.export.mine_action import DEFAULT_MIN_LIKELIHOOD, MINE_CUES
 
@@ -66,8 +69,11 @@ def _sig2(value: str) -> str:
             f"ELSE format_number(round({value}, 1 - floor(log10(abs({value})))), {digits}) END")
 
 
-def _with_sigma(value: str, sigma: str, fmt, unit: str) -> str:
-    return (f"CASE WHEN {value} IS NULL THEN 'not characterised' "
+def _with_sigma(value: str, sigma: str, fmt, unit: str, unconstrained: bool = False) -> str:
+    """Expression: ``value ± sigma unit``; with ``unconstrained``, a value whose 1-sigma is
+    larger than itself reads as the report's ``UNCONSTRAINED_TEXT``."""
+    loose = (f"WHEN {sigma} > {value} THEN '{UNCONSTRAINED_TEXT}' " if unconstrained else "")
+    return (f"CASE WHEN {value} IS NULL THEN 'not characterised' " + loose +
             f"WHEN {sigma} IS NULL THEN {fmt(value)} || ' {unit}' "
             f"ELSE {fmt(value)} || ' ± ' || {fmt(sigma)} || ' {unit}' END")
 
@@ -87,7 +93,8 @@ VIRTUAL_FIELDS = (
     ("depth", "String", _with_sigma('"depth_m" * 100', '"depth_sigma_m" * 100', _cm, "cm"),
      "Burial depth ± 1σ"),
     ("diffusivity", "String",
-     _with_sigma('"diffusivity_m2s" * 1e6', '"diffusivity_sigma_m2s" * 1e6', _sig2, "mm²/s"),
+     _with_sigma('"diffusivity_m2s" * 1e6', '"diffusivity_sigma_m2s" * 1e6', _sig2, "mm²/s",
+                 unconstrained=True),
      "Thermal diffusivity ± 1σ"),
     ("likelihood", "String", _percent("attribute('p_mine')", "'not estimated'"),
      "Mine likelihood"),

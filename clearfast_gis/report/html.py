@@ -80,15 +80,26 @@ def figure_name(anomaly_id: str) -> str:
     return f"figures/contrast_{anomaly_id}.png"
 
 
+UNCONSTRAINED_TEXT = "unconstrained"
+"""What the report and the QGIS form show for a diffusivity whose 1-sigma exceeds its value."""
+
+
 def diffusivity_text(alpha_m2s: float, sigma_m2s: float | None = None) -> str:
     """A diffusivity (m²/s) as a planner reads it: in mm²/s, two significant digits, with its
-    1-sigma when it is known (as the QGIS form shows it); no unit in the text.
+    1-sigma when it is known (as the QGIS form shows it); no unit in the text. A value whose
+    1-sigma is larger than itself (:data:`UNCONSTRAINED_TEXT`: the curve did not constrain it,
+    often the end of the model's table) is not printed as a number.
 
     >>> diffusivity_text(1.47e-7, 3.1e-8)
     '0.15 ± 0.031'
+    >>> diffusivity_text(3.2e-5, 1.2e-3)
+    'unconstrained'
     """
+    has_sigma = isinstance(sigma_m2s, float) and math.isfinite(sigma_m2s)
+    if has_sigma and sigma_m2s > alpha_m2s:
+        return UNCONSTRAINED_TEXT
     txt = f"{1e6 * alpha_m2s:#.2g}".rstrip(".")
-    if isinstance(sigma_m2s, float) and math.isfinite(sigma_m2s):
+    if has_sigma:
         txt += f" ± {1e6 * sigma_m2s:#.2g}".rstrip(".")
     return txt
 

@@ -1,91 +1,91 @@
 <!DOCTYPE qgis PUBLIC 'http://mrcc.com/qgis.dtd' 'SYSTEM'>
-<qgis styleCategories="Symbology|Labeling|Fields|Forms|MapTips|AttributeTable|Rendering" simplifyAlgorithm="0" simplifyLocal="1" version="3.22.16-Białowieża" minScale="100000000" simplifyDrawingHints="1" labelsEnabled="0" hasScaleBasedVisibilityFlag="0" maxScale="0" symbologyReferenceScale="-1" simplifyDrawingTol="1" simplifyMaxScale="1">
-  <renderer-v2 referencescale="-1" attr="polarity" enableorderby="0" type="categorizedSymbol" forceraster="0" symbollevels="0">
+<qgis minScale="100000000" labelsEnabled="0" version="3.22.16-Białowieża" maxScale="0" simplifyLocal="1" styleCategories="Symbology|Labeling|Fields|Forms|MapTips|AttributeTable|Rendering" simplifyDrawingTol="1" simplifyDrawingHints="1" simplifyAlgorithm="0" simplifyMaxScale="1" hasScaleBasedVisibilityFlag="0" symbologyReferenceScale="-1">
+  <renderer-v2 symbollevels="0" type="categorizedSymbol" referencescale="-1" forceraster="0" attr="polarity" enableorderby="0">
     <categories>
-      <category render="true" label="Warm by day" symbol="0" value="hot"/>
-      <category render="true" label="Cool by day" symbol="1" value="cold"/>
+      <category label="Warm by day" value="hot" render="true" symbol="0"/>
+      <category label="Cool by day" value="cold" render="true" symbol="1"/>
     </categories>
     <symbols>
-      <symbol type="fill" force_rhr="0" clip_to_extent="1" name="0" alpha="1">
+      <symbol type="fill" alpha="1" name="0" force_rhr="0" clip_to_extent="1">
         <data_defined_properties>
           <Option type="Map">
-            <Option type="QString" name="name" value=""/>
+            <Option value="" type="QString" name="name"/>
             <Option name="properties"/>
-            <Option type="QString" name="type" value="collection"/>
+            <Option value="collection" type="QString" name="type"/>
           </Option>
         </data_defined_properties>
-        <layer enabled="1" class="SimpleFill" locked="0" pass="0">
+        <layer enabled="1" class="SimpleFill" pass="0" locked="0">
           <Option type="Map">
-            <Option type="QString" name="border_width_map_unit_scale" value="3x:0,0,0,0,0,0"/>
-            <Option type="QString" name="color" value="0,0,0,0"/>
-            <Option type="QString" name="joinstyle" value="bevel"/>
-            <Option type="QString" name="offset" value="0,0"/>
-            <Option type="QString" name="offset_map_unit_scale" value="3x:0,0,0,0,0,0"/>
-            <Option type="QString" name="offset_unit" value="MM"/>
-            <Option type="QString" name="outline_color" value="215,48,39,255"/>
-            <Option type="QString" name="outline_style" value="solid"/>
-            <Option type="QString" name="outline_width" value="0.5"/>
-            <Option type="QString" name="outline_width_unit" value="MM"/>
-            <Option type="QString" name="style" value="no"/>
+            <Option value="3x:0,0,0,0,0,0" type="QString" name="border_width_map_unit_scale"/>
+            <Option value="0,0,0,0" type="QString" name="color"/>
+            <Option value="bevel" type="QString" name="joinstyle"/>
+            <Option value="0,0" type="QString" name="offset"/>
+            <Option value="3x:0,0,0,0,0,0" type="QString" name="offset_map_unit_scale"/>
+            <Option value="MM" type="QString" name="offset_unit"/>
+            <Option value="215,48,39,255" type="QString" name="outline_color"/>
+            <Option value="solid" type="QString" name="outline_style"/>
+            <Option value="0.5" type="QString" name="outline_width"/>
+            <Option value="MM" type="QString" name="outline_width_unit"/>
+            <Option value="no" type="QString" name="style"/>
           </Option>
-          <prop v="3x:0,0,0,0,0,0" k="border_width_map_unit_scale"/>
-          <prop v="0,0,0,0" k="color"/>
-          <prop v="bevel" k="joinstyle"/>
-          <prop v="0,0" k="offset"/>
-          <prop v="3x:0,0,0,0,0,0" k="offset_map_unit_scale"/>
-          <prop v="MM" k="offset_unit"/>
-          <prop v="215,48,39,255" k="outline_color"/>
-          <prop v="solid" k="outline_style"/>
-          <prop v="0.5" k="outline_width"/>
-          <prop v="MM" k="outline_width_unit"/>
-          <prop v="no" k="style"/>
+          <prop k="border_width_map_unit_scale" v="3x:0,0,0,0,0,0"/>
+          <prop k="color" v="0,0,0,0"/>
+          <prop k="joinstyle" v="bevel"/>
+          <prop k="offset" v="0,0"/>
+          <prop k="offset_map_unit_scale" v="3x:0,0,0,0,0,0"/>
+          <prop k="offset_unit" v="MM"/>
+          <prop k="outline_color" v="215,48,39,255"/>
+          <prop k="outline_style" v="solid"/>
+          <prop k="outline_width" v="0.5"/>
+          <prop k="outline_width_unit" v="MM"/>
+          <prop k="style" v="no"/>
           <data_defined_properties>
             <Option type="Map">
-              <Option type="QString" name="name" value=""/>
+              <Option value="" type="QString" name="name"/>
               <Option name="properties"/>
-              <Option type="QString" name="type" value="collection"/>
+              <Option value="collection" type="QString" name="type"/>
             </Option>
           </data_defined_properties>
         </layer>
       </symbol>
-      <symbol type="fill" force_rhr="0" clip_to_extent="1" name="1" alpha="1">
+      <symbol type="fill" alpha="1" name="1" force_rhr="0" clip_to_extent="1">
         <data_defined_properties>
           <Option type="Map">
-            <Option type="QString" name="name" value=""/>
+            <Option value="" type="QString" name="name"/>
             <Option name="properties"/>
-            <Option type="QString" name="type" value="collection"/>
+            <Option value="collection" type="QString" name="type"/>
           </Option>
         </data_defined_properties>
-        <layer enabled="1" class="SimpleFill" locked="0" pass="0">
+        <layer enabled="1" class="SimpleFill" pass="0" locked="0">
           <Option type="Map">
-            <Option type="QString" name="border_width_map_unit_scale" value="3x:0,0,0,0,0,0"/>
-            <Option type="QString" name="color" value="0,0,0,0"/>
-            <Option type="QString" name="joinstyle" value="bevel"/>
-            <Option type="QString" name="offset" value="0,0"/>
-            <Option type="QString" name="offset_map_unit_scale" value="3x:0,0,0,0,0,0"/>
-            <Option type="QString" name="offset_unit" value="MM"/>
-            <Option type="QString" name="outline_color" value="69,117,180,255"/>
-            <Option type="QString" name="outline_style" value="solid"/>
-            <Option type="QString" name="outline_width" value="0.5"/>
-            <Option type="QString" name="outline_width_unit" value="MM"/>
-            <Option type="QString" name="style" value="no"/>
+            <Option value="3x:0,0,0,0,0,0" type="QString" name="border_width_map_unit_scale"/>
+            <Option value="0,0,0,0" type="QString" name="color"/>
+            <Option value="bevel" type="QString" name="joinstyle"/>
+            <Option value="0,0" type="QString" name="offset"/>
+            <Option value="3x:0,0,0,0,0,0" type="QString" name="offset_map_unit_scale"/>
+            <Option value="MM" type="QString" name="offset_unit"/>
+            <Option value="69,117,180,255" type="QString" name="outline_color"/>
+            <Option value="solid" type="QString" name="outline_style"/>
+            <Option value="0.5" type="QString" name="outline_width"/>
+            <Option value="MM" type="QString" name="outline_width_unit"/>
+            <Option value="no" type="QString" name="style"/>
           </Option>
-          <prop v="3x:0,0,0,0,0,0" k="border_width_map_unit_scale"/>
-          <prop v="0,0,0,0" k="color"/>
-          <prop v="bevel" k="joinstyle"/>
-          <prop v="0,0" k="offset"/>
-          <prop v="3x:0,0,0,0,0,0" k="offset_map_unit_scale"/>
-          <prop v="MM" k="offset_unit"/>
-          <prop v="69,117,180,255" k="outline_color"/>
-          <prop v="solid" k="outline_style"/>
-          <prop v="0.5" k="outline_width"/>
-          <prop v="MM" k="outline_width_unit"/>
-          <prop v="no" k="style"/>
+          <prop k="border_width_map_unit_scale" v="3x:0,0,0,0,0,0"/>
+          <prop k="color" v="0,0,0,0"/>
+          <prop k="joinstyle" v="bevel"/>
+          <prop k="offset" v="0,0"/>
+          <prop k="offset_map_unit_scale" v="3x:0,0,0,0,0,0"/>
+          <prop k="offset_unit" v="MM"/>
+          <prop k="outline_color" v="69,117,180,255"/>
+          <prop k="outline_style" v="solid"/>
+          <prop k="outline_width" v="0.5"/>
+          <prop k="outline_width_unit" v="MM"/>
+          <prop k="style" v="no"/>
           <data_defined_properties>
             <Option type="Map">
-              <Option type="QString" name="name" value=""/>
+              <Option value="" type="QString" name="name"/>
               <Option name="properties"/>
-              <Option type="QString" name="type" value="collection"/>
+              <Option value="collection" type="QString" name="type"/>
             </Option>
           </data_defined_properties>
         </layer>
@@ -98,379 +98,379 @@
   <featureBlendMode>0</featureBlendMode>
   <layerOpacity>1</layerOpacity>
   <fieldConfiguration>
-    <field configurationFlags="None" name="anomaly_id">
+    <field name="anomaly_id" configurationFlags="None">
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option type="bool" name="IsMultiline" value="false"/>
-            <Option type="bool" name="UseHtml" value="false"/>
+            <Option value="false" type="bool" name="IsMultiline"/>
+            <Option value="false" type="bool" name="UseHtml"/>
           </Option>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="x">
+    <field name="x" configurationFlags="None">
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option type="bool" name="AllowNull" value="true"/>
-            <Option type="double" name="Max" value="1e+09"/>
-            <Option type="double" name="Min" value="-1e+09"/>
-            <Option type="int" name="Precision" value="2"/>
-            <Option type="int" name="Step" value="1"/>
-            <Option type="QString" name="Style" value="SpinBox"/>
+            <Option value="true" type="bool" name="AllowNull"/>
+            <Option value="1e+09" type="double" name="Max"/>
+            <Option value="-1e+09" type="double" name="Min"/>
+            <Option value="2" type="int" name="Precision"/>
+            <Option value="1" type="int" name="Step"/>
+            <Option value="SpinBox" type="QString" name="Style"/>
           </Option>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="y">
+    <field name="y" configurationFlags="None">
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option type="bool" name="AllowNull" value="true"/>
-            <Option type="double" name="Max" value="1e+09"/>
-            <Option type="double" name="Min" value="-1e+09"/>
-            <Option type="int" name="Precision" value="2"/>
-            <Option type="int" name="Step" value="1"/>
-            <Option type="QString" name="Style" value="SpinBox"/>
+            <Option value="true" type="bool" name="AllowNull"/>
+            <Option value="1e+09" type="double" name="Max"/>
+            <Option value="-1e+09" type="double" name="Min"/>
+            <Option value="2" type="int" name="Precision"/>
+            <Option value="1" type="int" name="Step"/>
+            <Option value="SpinBox" type="QString" name="Style"/>
           </Option>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="lat">
+    <field name="lat" configurationFlags="None">
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option type="bool" name="AllowNull" value="true"/>
-            <Option type="double" name="Max" value="1e+09"/>
-            <Option type="double" name="Min" value="-1e+09"/>
-            <Option type="int" name="Precision" value="7"/>
-            <Option type="int" name="Step" value="1"/>
-            <Option type="QString" name="Style" value="SpinBox"/>
+            <Option value="true" type="bool" name="AllowNull"/>
+            <Option value="1e+09" type="double" name="Max"/>
+            <Option value="-1e+09" type="double" name="Min"/>
+            <Option value="7" type="int" name="Precision"/>
+            <Option value="1" type="int" name="Step"/>
+            <Option value="SpinBox" type="QString" name="Style"/>
           </Option>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="lon">
+    <field name="lon" configurationFlags="None">
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option type="bool" name="AllowNull" value="true"/>
-            <Option type="double" name="Max" value="1e+09"/>
-            <Option type="double" name="Min" value="-1e+09"/>
-            <Option type="int" name="Precision" value="7"/>
-            <Option type="int" name="Step" value="1"/>
-            <Option type="QString" name="Style" value="SpinBox"/>
+            <Option value="true" type="bool" name="AllowNull"/>
+            <Option value="1e+09" type="double" name="Max"/>
+            <Option value="-1e+09" type="double" name="Min"/>
+            <Option value="7" type="int" name="Precision"/>
+            <Option value="1" type="int" name="Step"/>
+            <Option value="SpinBox" type="QString" name="Style"/>
           </Option>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="area_m2">
+    <field name="area_m2" configurationFlags="None">
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option type="bool" name="AllowNull" value="true"/>
-            <Option type="double" name="Max" value="1e+09"/>
-            <Option type="double" name="Min" value="-1e+09"/>
-            <Option type="int" name="Precision" value="3"/>
-            <Option type="int" name="Step" value="1"/>
-            <Option type="QString" name="Style" value="SpinBox"/>
+            <Option value="true" type="bool" name="AllowNull"/>
+            <Option value="1e+09" type="double" name="Max"/>
+            <Option value="-1e+09" type="double" name="Min"/>
+            <Option value="3" type="int" name="Precision"/>
+            <Option value="1" type="int" name="Step"/>
+            <Option value="SpinBox" type="QString" name="Style"/>
           </Option>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="diameter_m">
+    <field name="diameter_m" configurationFlags="None">
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option type="bool" name="AllowNull" value="true"/>
-            <Option type="double" name="Max" value="1e+09"/>
-            <Option type="double" name="Min" value="-1e+09"/>
-            <Option type="int" name="Precision" value="2"/>
-            <Option type="int" name="Step" value="1"/>
-            <Option type="QString" name="Style" value="SpinBox"/>
+            <Option value="true" type="bool" name="AllowNull"/>
+            <Option value="1e+09" type="double" name="Max"/>
+            <Option value="-1e+09" type="double" name="Min"/>
+            <Option value="2" type="int" name="Precision"/>
+            <Option value="1" type="int" name="Step"/>
+            <Option value="SpinBox" type="QString" name="Style"/>
           </Option>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="circularity">
+    <field name="circularity" configurationFlags="None">
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option type="bool" name="AllowNull" value="true"/>
-            <Option type="double" name="Max" value="1e+09"/>
-            <Option type="double" name="Min" value="-1e+09"/>
-            <Option type="int" name="Precision" value="2"/>
-            <Option type="int" name="Step" value="1"/>
-            <Option type="QString" name="Style" value="SpinBox"/>
+            <Option value="true" type="bool" name="AllowNull"/>
+            <Option value="1e+09" type="double" name="Max"/>
+            <Option value="-1e+09" type="double" name="Min"/>
+            <Option value="2" type="int" name="Precision"/>
+            <Option value="1" type="int" name="Step"/>
+            <Option value="SpinBox" type="QString" name="Style"/>
           </Option>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="depth_m">
+    <field name="depth_m" configurationFlags="None">
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option type="bool" name="AllowNull" value="true"/>
-            <Option type="double" name="Max" value="1e+09"/>
-            <Option type="double" name="Min" value="-1e+09"/>
-            <Option type="int" name="Precision" value="3"/>
-            <Option type="int" name="Step" value="1"/>
-            <Option type="QString" name="Style" value="SpinBox"/>
+            <Option value="true" type="bool" name="AllowNull"/>
+            <Option value="1e+09" type="double" name="Max"/>
+            <Option value="-1e+09" type="double" name="Min"/>
+            <Option value="3" type="int" name="Precision"/>
+            <Option value="1" type="int" name="Step"/>
+            <Option value="SpinBox" type="QString" name="Style"/>
           </Option>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="depth_sigma_m">
+    <field name="depth_sigma_m" configurationFlags="None">
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option type="bool" name="AllowNull" value="true"/>
-            <Option type="double" name="Max" value="1e+09"/>
-            <Option type="double" name="Min" value="-1e+09"/>
-            <Option type="int" name="Precision" value="3"/>
-            <Option type="int" name="Step" value="1"/>
-            <Option type="QString" name="Style" value="SpinBox"/>
+            <Option value="true" type="bool" name="AllowNull"/>
+            <Option value="1e+09" type="double" name="Max"/>
+            <Option value="-1e+09" type="double" name="Min"/>
+            <Option value="3" type="int" name="Precision"/>
+            <Option value="1" type="int" name="Step"/>
+            <Option value="SpinBox" type="QString" name="Style"/>
           </Option>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="diffusivity_m2s">
+    <field name="diffusivity_m2s" configurationFlags="None">
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option type="bool" name="IsMultiline" value="false"/>
-            <Option type="bool" name="UseHtml" value="false"/>
+            <Option value="false" type="bool" name="IsMultiline"/>
+            <Option value="false" type="bool" name="UseHtml"/>
           </Option>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="diffusivity_sigma_m2s">
+    <field name="diffusivity_sigma_m2s" configurationFlags="None">
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option type="bool" name="IsMultiline" value="false"/>
-            <Option type="bool" name="UseHtml" value="false"/>
+            <Option value="false" type="bool" name="IsMultiline"/>
+            <Option value="false" type="bool" name="UseHtml"/>
           </Option>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="status">
+    <field name="status" configurationFlags="None">
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option type="bool" name="IsMultiline" value="false"/>
-            <Option type="bool" name="UseHtml" value="false"/>
+            <Option value="false" type="bool" name="IsMultiline"/>
+            <Option value="false" type="bool" name="UseHtml"/>
           </Option>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="polarity">
+    <field name="polarity" configurationFlags="None">
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option type="bool" name="IsMultiline" value="false"/>
-            <Option type="bool" name="UseHtml" value="false"/>
+            <Option value="false" type="bool" name="IsMultiline"/>
+            <Option value="false" type="bool" name="UseHtml"/>
           </Option>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="class_cue">
+    <field name="class_cue" configurationFlags="None">
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option type="bool" name="IsMultiline" value="false"/>
-            <Option type="bool" name="UseHtml" value="false"/>
+            <Option value="false" type="bool" name="IsMultiline"/>
+            <Option value="false" type="bool" name="UseHtml"/>
           </Option>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="cue_confidence">
+    <field name="cue_confidence" configurationFlags="None">
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option type="bool" name="AllowNull" value="true"/>
-            <Option type="double" name="Max" value="1e+09"/>
-            <Option type="double" name="Min" value="-1e+09"/>
-            <Option type="int" name="Precision" value="2"/>
-            <Option type="int" name="Step" value="1"/>
-            <Option type="QString" name="Style" value="SpinBox"/>
+            <Option value="true" type="bool" name="AllowNull"/>
+            <Option value="1e+09" type="double" name="Max"/>
+            <Option value="-1e+09" type="double" name="Min"/>
+            <Option value="2" type="int" name="Precision"/>
+            <Option value="1" type="int" name="Step"/>
+            <Option value="SpinBox" type="QString" name="Style"/>
           </Option>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="p_mine">
+    <field name="p_mine" configurationFlags="None">
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option type="bool" name="AllowNull" value="true"/>
-            <Option type="double" name="Max" value="1e+09"/>
-            <Option type="double" name="Min" value="-1e+09"/>
-            <Option type="int" name="Precision" value="2"/>
-            <Option type="int" name="Step" value="1"/>
-            <Option type="QString" name="Style" value="SpinBox"/>
+            <Option value="true" type="bool" name="AllowNull"/>
+            <Option value="1e+09" type="double" name="Max"/>
+            <Option value="-1e+09" type="double" name="Min"/>
+            <Option value="2" type="int" name="Precision"/>
+            <Option value="1" type="int" name="Step"/>
+            <Option value="SpinBox" type="QString" name="Style"/>
           </Option>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="priority">
+    <field name="priority" configurationFlags="None">
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option type="bool" name="IsMultiline" value="false"/>
-            <Option type="bool" name="UseHtml" value="false"/>
+            <Option value="false" type="bool" name="IsMultiline"/>
+            <Option value="false" type="bool" name="UseHtml"/>
           </Option>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="set_aside_reason">
+    <field name="set_aside_reason" configurationFlags="None">
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option type="bool" name="IsMultiline" value="false"/>
-            <Option type="bool" name="UseHtml" value="false"/>
+            <Option value="false" type="bool" name="IsMultiline"/>
+            <Option value="false" type="bool" name="UseHtml"/>
           </Option>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="n_scans">
+    <field name="n_scans" configurationFlags="None">
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option type="bool" name="IsMultiline" value="false"/>
-            <Option type="bool" name="UseHtml" value="false"/>
+            <Option value="false" type="bool" name="IsMultiline"/>
+            <Option value="false" type="bool" name="UseHtml"/>
           </Option>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="contrast_day_k">
+    <field name="contrast_day_k" configurationFlags="None">
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option type="bool" name="AllowNull" value="true"/>
-            <Option type="double" name="Max" value="1e+09"/>
-            <Option type="double" name="Min" value="-1e+09"/>
-            <Option type="int" name="Precision" value="2"/>
-            <Option type="int" name="Step" value="1"/>
-            <Option type="QString" name="Style" value="SpinBox"/>
+            <Option value="true" type="bool" name="AllowNull"/>
+            <Option value="1e+09" type="double" name="Max"/>
+            <Option value="-1e+09" type="double" name="Min"/>
+            <Option value="2" type="int" name="Precision"/>
+            <Option value="1" type="int" name="Step"/>
+            <Option value="SpinBox" type="QString" name="Style"/>
           </Option>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="contrast_night_k">
+    <field name="contrast_night_k" configurationFlags="None">
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option type="bool" name="AllowNull" value="true"/>
-            <Option type="double" name="Max" value="1e+09"/>
-            <Option type="double" name="Min" value="-1e+09"/>
-            <Option type="int" name="Precision" value="2"/>
-            <Option type="int" name="Step" value="1"/>
-            <Option type="QString" name="Style" value="SpinBox"/>
+            <Option value="true" type="bool" name="AllowNull"/>
+            <Option value="1e+09" type="double" name="Max"/>
+            <Option value="-1e+09" type="double" name="Min"/>
+            <Option value="2" type="int" name="Precision"/>
+            <Option value="1" type="int" name="Step"/>
+            <Option value="SpinBox" type="QString" name="Style"/>
           </Option>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="mine_curve_r">
+    <field name="mine_curve_r" configurationFlags="None">
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option type="bool" name="AllowNull" value="true"/>
-            <Option type="double" name="Max" value="1e+09"/>
-            <Option type="double" name="Min" value="-1e+09"/>
-            <Option type="int" name="Precision" value="2"/>
-            <Option type="int" name="Step" value="1"/>
-            <Option type="QString" name="Style" value="SpinBox"/>
+            <Option value="true" type="bool" name="AllowNull"/>
+            <Option value="1e+09" type="double" name="Max"/>
+            <Option value="-1e+09" type="double" name="Min"/>
+            <Option value="2" type="int" name="Precision"/>
+            <Option value="1" type="int" name="Step"/>
+            <Option value="SpinBox" type="QString" name="Style"/>
           </Option>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="mine_curve_level">
+    <field name="mine_curve_level" configurationFlags="None">
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option type="bool" name="AllowNull" value="true"/>
-            <Option type="double" name="Max" value="1e+09"/>
-            <Option type="double" name="Min" value="-1e+09"/>
-            <Option type="int" name="Precision" value="2"/>
-            <Option type="int" name="Step" value="1"/>
-            <Option type="QString" name="Style" value="SpinBox"/>
+            <Option value="true" type="bool" name="AllowNull"/>
+            <Option value="1e+09" type="double" name="Max"/>
+            <Option value="-1e+09" type="double" name="Min"/>
+            <Option value="2" type="int" name="Precision"/>
+            <Option value="1" type="int" name="Step"/>
+            <Option value="SpinBox" type="QString" name="Style"/>
           </Option>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="fix_quality">
+    <field name="fix_quality" configurationFlags="None">
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option type="bool" name="IsMultiline" value="false"/>
-            <Option type="bool" name="UseHtml" value="false"/>
+            <Option value="false" type="bool" name="IsMultiline"/>
+            <Option value="false" type="bool" name="UseHtml"/>
           </Option>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="figure">
+    <field name="figure" configurationFlags="None">
       <editWidget type="">
         <config>
           <Option/>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="contrast_series">
+    <field name="contrast_series" configurationFlags="None">
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option type="bool" name="IsMultiline" value="false"/>
-            <Option type="bool" name="UseHtml" value="false"/>
+            <Option value="false" type="bool" name="IsMultiline"/>
+            <Option value="false" type="bool" name="UseHtml"/>
           </Option>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="short_id">
+    <field name="short_id" configurationFlags="None">
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option type="bool" name="IsMultiline" value="false"/>
-            <Option type="bool" name="UseHtml" value="false"/>
+            <Option value="false" type="bool" name="IsMultiline"/>
+            <Option value="false" type="bool" name="UseHtml"/>
           </Option>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="depth">
+    <field name="depth" configurationFlags="None">
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option type="bool" name="IsMultiline" value="false"/>
-            <Option type="bool" name="UseHtml" value="false"/>
+            <Option value="false" type="bool" name="IsMultiline"/>
+            <Option value="false" type="bool" name="UseHtml"/>
           </Option>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="diffusivity">
+    <field name="diffusivity" configurationFlags="None">
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option type="bool" name="IsMultiline" value="false"/>
-            <Option type="bool" name="UseHtml" value="false"/>
+            <Option value="false" type="bool" name="IsMultiline"/>
+            <Option value="false" type="bool" name="UseHtml"/>
           </Option>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="likelihood">
+    <field name="likelihood" configurationFlags="None">
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option type="bool" name="IsMultiline" value="false"/>
-            <Option type="bool" name="UseHtml" value="false"/>
+            <Option value="false" type="bool" name="IsMultiline"/>
+            <Option value="false" type="bool" name="UseHtml"/>
           </Option>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="cue_confidence_pct">
+    <field name="cue_confidence_pct" configurationFlags="None">
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option type="bool" name="IsMultiline" value="false"/>
-            <Option type="bool" name="UseHtml" value="false"/>
+            <Option value="false" type="bool" name="IsMultiline"/>
+            <Option value="false" type="bool" name="UseHtml"/>
           </Option>
         </config>
       </editWidget>
@@ -511,149 +511,154 @@
     <alias field="cue_confidence_pct" index="31" name="Class cue confidence"/>
   </aliases>
   <defaults>
-    <default field="anomaly_id" expression="" applyOnUpdate="0"/>
-    <default field="x" expression="" applyOnUpdate="0"/>
-    <default field="y" expression="" applyOnUpdate="0"/>
-    <default field="lat" expression="" applyOnUpdate="0"/>
-    <default field="lon" expression="" applyOnUpdate="0"/>
-    <default field="area_m2" expression="" applyOnUpdate="0"/>
-    <default field="diameter_m" expression="" applyOnUpdate="0"/>
-    <default field="circularity" expression="" applyOnUpdate="0"/>
-    <default field="depth_m" expression="" applyOnUpdate="0"/>
-    <default field="depth_sigma_m" expression="" applyOnUpdate="0"/>
-    <default field="diffusivity_m2s" expression="" applyOnUpdate="0"/>
-    <default field="diffusivity_sigma_m2s" expression="" applyOnUpdate="0"/>
-    <default field="status" expression="" applyOnUpdate="0"/>
-    <default field="polarity" expression="" applyOnUpdate="0"/>
-    <default field="class_cue" expression="" applyOnUpdate="0"/>
-    <default field="cue_confidence" expression="" applyOnUpdate="0"/>
-    <default field="p_mine" expression="" applyOnUpdate="0"/>
-    <default field="priority" expression="" applyOnUpdate="0"/>
-    <default field="set_aside_reason" expression="" applyOnUpdate="0"/>
-    <default field="n_scans" expression="" applyOnUpdate="0"/>
-    <default field="contrast_day_k" expression="" applyOnUpdate="0"/>
-    <default field="contrast_night_k" expression="" applyOnUpdate="0"/>
-    <default field="mine_curve_r" expression="" applyOnUpdate="0"/>
-    <default field="mine_curve_level" expression="" applyOnUpdate="0"/>
-    <default field="fix_quality" expression="" applyOnUpdate="0"/>
-    <default field="figure" expression="" applyOnUpdate="0"/>
-    <default field="contrast_series" expression="" applyOnUpdate="0"/>
-    <default field="short_id" expression="" applyOnUpdate="0"/>
-    <default field="depth" expression="" applyOnUpdate="0"/>
-    <default field="diffusivity" expression="" applyOnUpdate="0"/>
-    <default field="likelihood" expression="" applyOnUpdate="0"/>
-    <default field="cue_confidence_pct" expression="" applyOnUpdate="0"/>
+    <default field="anomaly_id" applyOnUpdate="0" expression=""/>
+    <default field="x" applyOnUpdate="0" expression=""/>
+    <default field="y" applyOnUpdate="0" expression=""/>
+    <default field="lat" applyOnUpdate="0" expression=""/>
+    <default field="lon" applyOnUpdate="0" expression=""/>
+    <default field="area_m2" applyOnUpdate="0" expression=""/>
+    <default field="diameter_m" applyOnUpdate="0" expression=""/>
+    <default field="circularity" applyOnUpdate="0" expression=""/>
+    <default field="depth_m" applyOnUpdate="0" expression=""/>
+    <default field="depth_sigma_m" applyOnUpdate="0" expression=""/>
+    <default field="diffusivity_m2s" applyOnUpdate="0" expression=""/>
+    <default field="diffusivity_sigma_m2s" applyOnUpdate="0" expression=""/>
+    <default field="status" applyOnUpdate="0" expression=""/>
+    <default field="polarity" applyOnUpdate="0" expression=""/>
+    <default field="class_cue" applyOnUpdate="0" expression=""/>
+    <default field="cue_confidence" applyOnUpdate="0" expression=""/>
+    <default field="p_mine" applyOnUpdate="0" expression=""/>
+    <default field="priority" applyOnUpdate="0" expression=""/>
+    <default field="set_aside_reason" applyOnUpdate="0" expression=""/>
+    <default field="n_scans" applyOnUpdate="0" expression=""/>
+    <default field="contrast_day_k" applyOnUpdate="0" expression=""/>
+    <default field="contrast_night_k" applyOnUpdate="0" expression=""/>
+    <default field="mine_curve_r" applyOnUpdate="0" expression=""/>
+    <default field="mine_curve_level" applyOnUpdate="0" expression=""/>
+    <default field="fix_quality" applyOnUpdate="0" expression=""/>
+    <default field="figure" applyOnUpdate="0" expression=""/>
+    <default field="contrast_series" applyOnUpdate="0" expression=""/>
+    <default field="short_id" applyOnUpdate="0" expression=""/>
+    <default field="depth" applyOnUpdate="0" expression=""/>
+    <default field="diffusivity" applyOnUpdate="0" expression=""/>
+    <default field="likelihood" applyOnUpdate="0" expression=""/>
+    <default field="cue_confidence_pct" applyOnUpdate="0" expression=""/>
   </defaults>
   <constraints>
-    <constraint exp_strength="0" field="anomaly_id" notnull_strength="0" constraints="0" unique_strength="0"/>
-    <constraint exp_strength="0" field="x" notnull_strength="0" constraints="0" unique_strength="0"/>
-    <constraint exp_strength="0" field="y" notnull_strength="0" constraints="0" unique_strength="0"/>
-    <constraint exp_strength="0" field="lat" notnull_strength="0" constraints="0" unique_strength="0"/>
-    <constraint exp_strength="0" field="lon" notnull_strength="0" constraints="0" unique_strength="0"/>
-    <constraint exp_strength="0" field="area_m2" notnull_strength="0" constraints="0" unique_strength="0"/>
-    <constraint exp_strength="0" field="diameter_m" notnull_strength="0" constraints="0" unique_strength="0"/>
-    <constraint exp_strength="0" field="circularity" notnull_strength="0" constraints="0" unique_strength="0"/>
-    <constraint exp_strength="0" field="depth_m" notnull_strength="0" constraints="0" unique_strength="0"/>
-    <constraint exp_strength="0" field="depth_sigma_m" notnull_strength="0" constraints="0" unique_strength="0"/>
-    <constraint exp_strength="0" field="diffusivity_m2s" notnull_strength="0" constraints="0" unique_strength="0"/>
-    <constraint exp_strength="0" field="diffusivity_sigma_m2s" notnull_strength="0" constraints="0" unique_strength="0"/>
-    <constraint exp_strength="0" field="status" notnull_strength="0" constraints="0" unique_strength="0"/>
-    <constraint exp_strength="0" field="polarity" notnull_strength="0" constraints="0" unique_strength="0"/>
-    <constraint exp_strength="0" field="class_cue" notnull_strength="0" constraints="0" unique_strength="0"/>
-    <constraint exp_strength="0" field="cue_confidence" notnull_strength="0" constraints="0" unique_strength="0"/>
-    <constraint exp_strength="0" field="p_mine" notnull_strength="0" constraints="0" unique_strength="0"/>
-    <constraint exp_strength="0" field="priority" notnull_strength="0" constraints="0" unique_strength="0"/>
-    <constraint exp_strength="0" field="set_aside_reason" notnull_strength="0" constraints="0" unique_strength="0"/>
-    <constraint exp_strength="0" field="n_scans" notnull_strength="0" constraints="0" unique_strength="0"/>
-    <constraint exp_strength="0" field="contrast_day_k" notnull_strength="0" constraints="0" unique_strength="0"/>
-    <constraint exp_strength="0" field="contrast_night_k" notnull_strength="0" constraints="0" unique_strength="0"/>
-    <constraint exp_strength="0" field="mine_curve_r" notnull_strength="0" constraints="0" unique_strength="0"/>
-    <constraint exp_strength="0" field="mine_curve_level" notnull_strength="0" constraints="0" unique_strength="0"/>
-    <constraint exp_strength="0" field="fix_quality" notnull_strength="0" constraints="0" unique_strength="0"/>
-    <constraint exp_strength="0" field="figure" notnull_strength="0" constraints="0" unique_strength="0"/>
-    <constraint exp_strength="0" field="contrast_series" notnull_strength="0" constraints="0" unique_strength="0"/>
-    <constraint exp_strength="0" field="short_id" notnull_strength="0" constraints="0" unique_strength="0"/>
-    <constraint exp_strength="0" field="depth" notnull_strength="0" constraints="0" unique_strength="0"/>
-    <constraint exp_strength="0" field="diffusivity" notnull_strength="0" constraints="0" unique_strength="0"/>
-    <constraint exp_strength="0" field="likelihood" notnull_strength="0" constraints="0" unique_strength="0"/>
-    <constraint exp_strength="0" field="cue_confidence_pct" notnull_strength="0" constraints="0" unique_strength="0"/>
+    <constraint field="anomaly_id" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint field="x" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint field="y" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint field="lat" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint field="lon" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint field="area_m2" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint field="diameter_m" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint field="circularity" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint field="depth_m" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint field="depth_sigma_m" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint field="diffusivity_m2s" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint field="diffusivity_sigma_m2s" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint field="status" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint field="polarity" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint field="class_cue" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint field="cue_confidence" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint field="p_mine" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint field="priority" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint field="set_aside_reason" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint field="n_scans" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint field="contrast_day_k" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint field="contrast_night_k" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint field="mine_curve_r" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint field="mine_curve_level" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint field="fix_quality" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint field="figure" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint field="contrast_series" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint field="short_id" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint field="depth" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint field="diffusivity" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint field="likelihood" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint field="cue_confidence_pct" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
   </constraints>
   <constraintExpressions>
-    <constraint field="anomaly_id" exp="" desc=""/>
-    <constraint field="x" exp="" desc=""/>
-    <constraint field="y" exp="" desc=""/>
-    <constraint field="lat" exp="" desc=""/>
-    <constraint field="lon" exp="" desc=""/>
-    <constraint field="area_m2" exp="" desc=""/>
-    <constraint field="diameter_m" exp="" desc=""/>
-    <constraint field="circularity" exp="" desc=""/>
-    <constraint field="depth_m" exp="" desc=""/>
-    <constraint field="depth_sigma_m" exp="" desc=""/>
-    <constraint field="diffusivity_m2s" exp="" desc=""/>
-    <constraint field="diffusivity_sigma_m2s" exp="" desc=""/>
-    <constraint field="status" exp="" desc=""/>
-    <constraint field="polarity" exp="" desc=""/>
-    <constraint field="class_cue" exp="" desc=""/>
-    <constraint field="cue_confidence" exp="" desc=""/>
-    <constraint field="p_mine" exp="" desc=""/>
-    <constraint field="priority" exp="" desc=""/>
-    <constraint field="set_aside_reason" exp="" desc=""/>
-    <constraint field="n_scans" exp="" desc=""/>
-    <constraint field="contrast_day_k" exp="" desc=""/>
-    <constraint field="contrast_night_k" exp="" desc=""/>
-    <constraint field="mine_curve_r" exp="" desc=""/>
-    <constraint field="mine_curve_level" exp="" desc=""/>
-    <constraint field="fix_quality" exp="" desc=""/>
-    <constraint field="figure" exp="" desc=""/>
-    <constraint field="contrast_series" exp="" desc=""/>
-    <constraint field="short_id" exp="" desc=""/>
-    <constraint field="depth" exp="" desc=""/>
-    <constraint field="diffusivity" exp="" desc=""/>
-    <constraint field="likelihood" exp="" desc=""/>
-    <constraint field="cue_confidence_pct" exp="" desc=""/>
+    <constraint field="anomaly_id" desc="" exp=""/>
+    <constraint field="x" desc="" exp=""/>
+    <constraint field="y" desc="" exp=""/>
+    <constraint field="lat" desc="" exp=""/>
+    <constraint field="lon" desc="" exp=""/>
+    <constraint field="area_m2" desc="" exp=""/>
+    <constraint field="diameter_m" desc="" exp=""/>
+    <constraint field="circularity" desc="" exp=""/>
+    <constraint field="depth_m" desc="" exp=""/>
+    <constraint field="depth_sigma_m" desc="" exp=""/>
+    <constraint field="diffusivity_m2s" desc="" exp=""/>
+    <constraint field="diffusivity_sigma_m2s" desc="" exp=""/>
+    <constraint field="status" desc="" exp=""/>
+    <constraint field="polarity" desc="" exp=""/>
+    <constraint field="class_cue" desc="" exp=""/>
+    <constraint field="cue_confidence" desc="" exp=""/>
+    <constraint field="p_mine" desc="" exp=""/>
+    <constraint field="priority" desc="" exp=""/>
+    <constraint field="set_aside_reason" desc="" exp=""/>
+    <constraint field="n_scans" desc="" exp=""/>
+    <constraint field="contrast_day_k" desc="" exp=""/>
+    <constraint field="contrast_night_k" desc="" exp=""/>
+    <constraint field="mine_curve_r" desc="" exp=""/>
+    <constraint field="mine_curve_level" desc="" exp=""/>
+    <constraint field="fix_quality" desc="" exp=""/>
+    <constraint field="figure" desc="" exp=""/>
+    <constraint field="contrast_series" desc="" exp=""/>
+    <constraint field="short_id" desc="" exp=""/>
+    <constraint field="depth" desc="" exp=""/>
+    <constraint field="diffusivity" desc="" exp=""/>
+    <constraint field="likelihood" desc="" exp=""/>
+    <constraint field="cue_confidence_pct" desc="" exp=""/>
   </constraintExpressions>
   <expressionfields>
-    <field precision="0" typeName="" length="0" comment="" type="10" subType="0" expression="'S-' || lpad(to_string(to_int(regexp_substr(&quot;anomaly_id&quot;, '(\\d+)$'))), 3, '0')" name="short_id"/>
-    <field precision="0" typeName="" length="0" comment="" type="10" subType="0" expression="CASE WHEN &quot;depth_m&quot; * 100 IS NULL THEN 'not characterised' WHEN &quot;depth_sigma_m&quot; * 100 IS NULL THEN format_number(&quot;depth_m&quot; * 100, 1) || ' cm' ELSE format_number(&quot;depth_m&quot; * 100, 1) || ' ± ' || format_number(&quot;depth_sigma_m&quot; * 100, 1) || ' cm' END" name="depth"/>
-    <field precision="0" typeName="" length="0" comment="" type="10" subType="0" expression="CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 IS NULL THEN 'not characterised' WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 IS NULL THEN CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' mm²/s' ELSE CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' ± ' || CASE WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_sigma_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6))))) END || ' mm²/s' END" name="diffusivity"/>
-    <field precision="0" typeName="" length="0" comment="" type="10" subType="0" expression="CASE WHEN attribute('p_mine') IS NULL THEN 'not estimated' ELSE format_number(100 * attribute('p_mine'), 0) || ' %' END" name="likelihood"/>
-    <field precision="0" typeName="" length="0" comment="" type="10" subType="0" expression="CASE WHEN coalesce(attribute('cue_confidence'), attribute('confidence')) IS NULL THEN NULL ELSE format_number(100 * coalesce(attribute('cue_confidence'), attribute('confidence')), 0) || ' %' END" name="cue_confidence_pct"/>
-    <field precision="0" typeName="" length="0" comment="" type="10" subType="0" expression="'S-' || lpad(to_string(to_int(regexp_substr(&quot;anomaly_id&quot;, '(\\d+)$'))), 3, '0')" name="short_id"/>
-    <field precision="0" typeName="" length="0" comment="" type="10" subType="0" expression="CASE WHEN &quot;depth_m&quot; * 100 IS NULL THEN 'not characterised' WHEN &quot;depth_sigma_m&quot; * 100 IS NULL THEN format_number(&quot;depth_m&quot; * 100, 1) || ' cm' ELSE format_number(&quot;depth_m&quot; * 100, 1) || ' ± ' || format_number(&quot;depth_sigma_m&quot; * 100, 1) || ' cm' END" name="depth"/>
-    <field precision="0" typeName="" length="0" comment="" type="10" subType="0" expression="CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 IS NULL THEN 'not characterised' WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 IS NULL THEN CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' mm²/s' ELSE CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' ± ' || CASE WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_sigma_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6))))) END || ' mm²/s' END" name="diffusivity"/>
-    <field precision="0" typeName="" length="0" comment="" type="10" subType="0" expression="CASE WHEN attribute('p_mine') IS NULL THEN 'not estimated' ELSE format_number(100 * attribute('p_mine'), 0) || ' %' END" name="likelihood"/>
-    <field precision="0" typeName="" length="0" comment="" type="10" subType="0" expression="CASE WHEN coalesce(attribute('cue_confidence'), attribute('confidence')) IS NULL THEN NULL ELSE format_number(100 * coalesce(attribute('cue_confidence'), attribute('confidence')), 0) || ' %' END" name="cue_confidence_pct"/>
-    <field precision="0" typeName="" length="0" comment="" type="10" subType="0" expression="'S-' || lpad(to_string(to_int(regexp_substr(&quot;anomaly_id&quot;, '(\\d+)$'))), 3, '0')" name="short_id"/>
-    <field precision="0" typeName="" length="0" comment="" type="10" subType="0" expression="CASE WHEN &quot;depth_m&quot; * 100 IS NULL THEN 'not characterised' WHEN &quot;depth_sigma_m&quot; * 100 IS NULL THEN format_number(&quot;depth_m&quot; * 100, 1) || ' cm' ELSE format_number(&quot;depth_m&quot; * 100, 1) || ' ± ' || format_number(&quot;depth_sigma_m&quot; * 100, 1) || ' cm' END" name="depth"/>
-    <field precision="0" typeName="" length="0" comment="" type="10" subType="0" expression="CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 IS NULL THEN 'not characterised' WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 IS NULL THEN CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' mm²/s' ELSE CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' ± ' || CASE WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_sigma_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6))))) END || ' mm²/s' END" name="diffusivity"/>
-    <field precision="0" typeName="" length="0" comment="" type="10" subType="0" expression="CASE WHEN attribute('p_mine') IS NULL THEN 'not estimated' ELSE format_number(100 * attribute('p_mine'), 0) || ' %' END" name="likelihood"/>
-    <field precision="0" typeName="" length="0" comment="" type="10" subType="0" expression="CASE WHEN coalesce(attribute('cue_confidence'), attribute('confidence')) IS NULL THEN NULL ELSE format_number(100 * coalesce(attribute('cue_confidence'), attribute('confidence')), 0) || ' %' END" name="cue_confidence_pct"/>
-    <field precision="0" typeName="" length="0" comment="" type="10" subType="0" expression="'S-' || lpad(to_string(to_int(regexp_substr(&quot;anomaly_id&quot;, '(\\d+)$'))), 3, '0')" name="short_id"/>
-    <field precision="0" typeName="" length="0" comment="" type="10" subType="0" expression="CASE WHEN &quot;depth_m&quot; * 100 IS NULL THEN 'not characterised' WHEN &quot;depth_sigma_m&quot; * 100 IS NULL THEN format_number(&quot;depth_m&quot; * 100, 1) || ' cm' ELSE format_number(&quot;depth_m&quot; * 100, 1) || ' ± ' || format_number(&quot;depth_sigma_m&quot; * 100, 1) || ' cm' END" name="depth"/>
-    <field precision="0" typeName="" length="0" comment="" type="10" subType="0" expression="CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 IS NULL THEN 'not characterised' WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 IS NULL THEN CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' mm²/s' ELSE CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' ± ' || CASE WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_sigma_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6))))) END || ' mm²/s' END" name="diffusivity"/>
-    <field precision="0" typeName="" length="0" comment="" type="10" subType="0" expression="CASE WHEN attribute('p_mine') IS NULL THEN 'not estimated' ELSE format_number(100 * attribute('p_mine'), 0) || ' %' END" name="likelihood"/>
-    <field precision="0" typeName="" length="0" comment="" type="10" subType="0" expression="CASE WHEN coalesce(attribute('cue_confidence'), attribute('confidence')) IS NULL THEN NULL ELSE format_number(100 * coalesce(attribute('cue_confidence'), attribute('confidence')), 0) || ' %' END" name="cue_confidence_pct"/>
-    <field precision="0" typeName="" length="0" comment="" type="10" subType="0" expression="'S-' || lpad(to_string(to_int(regexp_substr(&quot;anomaly_id&quot;, '(\\d+)$'))), 3, '0')" name="short_id"/>
-    <field precision="0" typeName="" length="0" comment="" type="10" subType="0" expression="CASE WHEN &quot;depth_m&quot; * 100 IS NULL THEN 'not characterised' WHEN &quot;depth_sigma_m&quot; * 100 IS NULL THEN format_number(&quot;depth_m&quot; * 100, 1) || ' cm' ELSE format_number(&quot;depth_m&quot; * 100, 1) || ' ± ' || format_number(&quot;depth_sigma_m&quot; * 100, 1) || ' cm' END" name="depth"/>
-    <field precision="0" typeName="" length="0" comment="" type="10" subType="0" expression="CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 IS NULL THEN 'not characterised' WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 IS NULL THEN CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' mm²/s' ELSE CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' ± ' || CASE WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_sigma_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6))))) END || ' mm²/s' END" name="diffusivity"/>
-    <field precision="0" typeName="" length="0" comment="" type="10" subType="0" expression="CASE WHEN attribute('p_mine') IS NULL THEN 'not estimated' ELSE format_number(100 * attribute('p_mine'), 0) || ' %' END" name="likelihood"/>
-    <field precision="0" typeName="" length="0" comment="" type="10" subType="0" expression="CASE WHEN coalesce(attribute('cue_confidence'), attribute('confidence')) IS NULL THEN NULL ELSE format_number(100 * coalesce(attribute('cue_confidence'), attribute('confidence')), 0) || ' %' END" name="cue_confidence_pct"/>
+    <field type="10" typeName="" name="short_id" comment="" subType="0" precision="0" expression="'S-' || lpad(to_string(to_int(regexp_substr(&quot;anomaly_id&quot;, '(\\d+)$'))), 3, '0')" length="0"/>
+    <field type="10" typeName="" name="depth" comment="" subType="0" precision="0" expression="CASE WHEN &quot;depth_m&quot; * 100 IS NULL THEN 'not characterised' WHEN &quot;depth_sigma_m&quot; * 100 IS NULL THEN format_number(&quot;depth_m&quot; * 100, 1) || ' cm' ELSE format_number(&quot;depth_m&quot; * 100, 1) || ' ± ' || format_number(&quot;depth_sigma_m&quot; * 100, 1) || ' cm' END" length="0"/>
+    <field type="10" typeName="" name="diffusivity" comment="" subType="0" precision="0" expression="CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 IS NULL THEN 'not characterised' WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 IS NULL THEN CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' mm²/s' ELSE CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' ± ' || CASE WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_sigma_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6))))) END || ' mm²/s' END" length="0"/>
+    <field type="10" typeName="" name="likelihood" comment="" subType="0" precision="0" expression="CASE WHEN attribute('p_mine') IS NULL THEN 'not estimated' ELSE format_number(100 * attribute('p_mine'), 0) || ' %' END" length="0"/>
+    <field type="10" typeName="" name="cue_confidence_pct" comment="" subType="0" precision="0" expression="CASE WHEN coalesce(attribute('cue_confidence'), attribute('confidence')) IS NULL THEN NULL ELSE format_number(100 * coalesce(attribute('cue_confidence'), attribute('confidence')), 0) || ' %' END" length="0"/>
+    <field type="10" typeName="" name="short_id" comment="" subType="0" precision="0" expression="'S-' || lpad(to_string(to_int(regexp_substr(&quot;anomaly_id&quot;, '(\\d+)$'))), 3, '0')" length="0"/>
+    <field type="10" typeName="" name="depth" comment="" subType="0" precision="0" expression="CASE WHEN &quot;depth_m&quot; * 100 IS NULL THEN 'not characterised' WHEN &quot;depth_sigma_m&quot; * 100 IS NULL THEN format_number(&quot;depth_m&quot; * 100, 1) || ' cm' ELSE format_number(&quot;depth_m&quot; * 100, 1) || ' ± ' || format_number(&quot;depth_sigma_m&quot; * 100, 1) || ' cm' END" length="0"/>
+    <field type="10" typeName="" name="diffusivity" comment="" subType="0" precision="0" expression="CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 IS NULL THEN 'not characterised' WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 IS NULL THEN CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' mm²/s' ELSE CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' ± ' || CASE WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_sigma_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6))))) END || ' mm²/s' END" length="0"/>
+    <field type="10" typeName="" name="likelihood" comment="" subType="0" precision="0" expression="CASE WHEN attribute('p_mine') IS NULL THEN 'not estimated' ELSE format_number(100 * attribute('p_mine'), 0) || ' %' END" length="0"/>
+    <field type="10" typeName="" name="cue_confidence_pct" comment="" subType="0" precision="0" expression="CASE WHEN coalesce(attribute('cue_confidence'), attribute('confidence')) IS NULL THEN NULL ELSE format_number(100 * coalesce(attribute('cue_confidence'), attribute('confidence')), 0) || ' %' END" length="0"/>
+    <field type="10" typeName="" name="short_id" comment="" subType="0" precision="0" expression="'S-' || lpad(to_string(to_int(regexp_substr(&quot;anomaly_id&quot;, '(\\d+)$'))), 3, '0')" length="0"/>
+    <field type="10" typeName="" name="depth" comment="" subType="0" precision="0" expression="CASE WHEN &quot;depth_m&quot; * 100 IS NULL THEN 'not characterised' WHEN &quot;depth_sigma_m&quot; * 100 IS NULL THEN format_number(&quot;depth_m&quot; * 100, 1) || ' cm' ELSE format_number(&quot;depth_m&quot; * 100, 1) || ' ± ' || format_number(&quot;depth_sigma_m&quot; * 100, 1) || ' cm' END" length="0"/>
+    <field type="10" typeName="" name="diffusivity" comment="" subType="0" precision="0" expression="CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 IS NULL THEN 'not characterised' WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 IS NULL THEN CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' mm²/s' ELSE CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' ± ' || CASE WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_sigma_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6))))) END || ' mm²/s' END" length="0"/>
+    <field type="10" typeName="" name="likelihood" comment="" subType="0" precision="0" expression="CASE WHEN attribute('p_mine') IS NULL THEN 'not estimated' ELSE format_number(100 * attribute('p_mine'), 0) || ' %' END" length="0"/>
+    <field type="10" typeName="" name="cue_confidence_pct" comment="" subType="0" precision="0" expression="CASE WHEN coalesce(attribute('cue_confidence'), attribute('confidence')) IS NULL THEN NULL ELSE format_number(100 * coalesce(attribute('cue_confidence'), attribute('confidence')), 0) || ' %' END" length="0"/>
+    <field type="10" typeName="" name="short_id" comment="" subType="0" precision="0" expression="'S-' || lpad(to_string(to_int(regexp_substr(&quot;anomaly_id&quot;, '(\\d+)$'))), 3, '0')" length="0"/>
+    <field type="10" typeName="" name="depth" comment="" subType="0" precision="0" expression="CASE WHEN &quot;depth_m&quot; * 100 IS NULL THEN 'not characterised' WHEN &quot;depth_sigma_m&quot; * 100 IS NULL THEN format_number(&quot;depth_m&quot; * 100, 1) || ' cm' ELSE format_number(&quot;depth_m&quot; * 100, 1) || ' ± ' || format_number(&quot;depth_sigma_m&quot; * 100, 1) || ' cm' END" length="0"/>
+    <field type="10" typeName="" name="diffusivity" comment="" subType="0" precision="0" expression="CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 IS NULL THEN 'not characterised' WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 IS NULL THEN CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' mm²/s' ELSE CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' ± ' || CASE WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_sigma_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6))))) END || ' mm²/s' END" length="0"/>
+    <field type="10" typeName="" name="likelihood" comment="" subType="0" precision="0" expression="CASE WHEN attribute('p_mine') IS NULL THEN 'not estimated' ELSE format_number(100 * attribute('p_mine'), 0) || ' %' END" length="0"/>
+    <field type="10" typeName="" name="cue_confidence_pct" comment="" subType="0" precision="0" expression="CASE WHEN coalesce(attribute('cue_confidence'), attribute('confidence')) IS NULL THEN NULL ELSE format_number(100 * coalesce(attribute('cue_confidence'), attribute('confidence')), 0) || ' %' END" length="0"/>
+    <field type="10" typeName="" name="short_id" comment="" subType="0" precision="0" expression="'S-' || lpad(to_string(to_int(regexp_substr(&quot;anomaly_id&quot;, '(\\d+)$'))), 3, '0')" length="0"/>
+    <field type="10" typeName="" name="depth" comment="" subType="0" precision="0" expression="CASE WHEN &quot;depth_m&quot; * 100 IS NULL THEN 'not characterised' WHEN &quot;depth_sigma_m&quot; * 100 IS NULL THEN format_number(&quot;depth_m&quot; * 100, 1) || ' cm' ELSE format_number(&quot;depth_m&quot; * 100, 1) || ' ± ' || format_number(&quot;depth_sigma_m&quot; * 100, 1) || ' cm' END" length="0"/>
+    <field type="10" typeName="" name="diffusivity" comment="" subType="0" precision="0" expression="CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 IS NULL THEN 'not characterised' WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 IS NULL THEN CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' mm²/s' ELSE CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' ± ' || CASE WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_sigma_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6))))) END || ' mm²/s' END" length="0"/>
+    <field type="10" typeName="" name="likelihood" comment="" subType="0" precision="0" expression="CASE WHEN attribute('p_mine') IS NULL THEN 'not estimated' ELSE format_number(100 * attribute('p_mine'), 0) || ' %' END" length="0"/>
+    <field type="10" typeName="" name="cue_confidence_pct" comment="" subType="0" precision="0" expression="CASE WHEN coalesce(attribute('cue_confidence'), attribute('confidence')) IS NULL THEN NULL ELSE format_number(100 * coalesce(attribute('cue_confidence'), attribute('confidence')), 0) || ' %' END" length="0"/>
+    <field type="10" typeName="" name="short_id" comment="" subType="0" precision="0" expression="'S-' || lpad(to_string(to_int(regexp_substr(&quot;anomaly_id&quot;, '(\\d+)$'))), 3, '0')" length="0"/>
+    <field type="10" typeName="" name="depth" comment="" subType="0" precision="0" expression="CASE WHEN &quot;depth_m&quot; * 100 IS NULL THEN 'not characterised' WHEN &quot;depth_sigma_m&quot; * 100 IS NULL THEN format_number(&quot;depth_m&quot; * 100, 1) || ' cm' ELSE format_number(&quot;depth_m&quot; * 100, 1) || ' ± ' || format_number(&quot;depth_sigma_m&quot; * 100, 1) || ' cm' END" length="0"/>
+    <field type="10" typeName="" name="diffusivity" comment="" subType="0" precision="0" expression="CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 IS NULL THEN 'not characterised' WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 > &quot;diffusivity_m2s&quot; * 1e6 THEN 'unconstrained' WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 IS NULL THEN CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' mm²/s' ELSE CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' ± ' || CASE WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_sigma_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6))))) END || ' mm²/s' END" length="0"/>
+    <field type="10" typeName="" name="likelihood" comment="" subType="0" precision="0" expression="CASE WHEN attribute('p_mine') IS NULL THEN 'not estimated' ELSE format_number(100 * attribute('p_mine'), 0) || ' %' END" length="0"/>
+    <field type="10" typeName="" name="cue_confidence_pct" comment="" subType="0" precision="0" expression="CASE WHEN coalesce(attribute('cue_confidence'), attribute('confidence')) IS NULL THEN NULL ELSE format_number(100 * coalesce(attribute('cue_confidence'), attribute('confidence')), 0) || ' %' END" length="0"/>
   </expressionfields>
-  <attributetableconfig actionWidgetStyle="dropDown" sortOrder="0" sortExpression="coalesce(attribute('priority'), 1000000 * (CASE WHEN &quot;class_cue&quot; = 'at_mine' THEN 0 WHEN &quot;class_cue&quot; = 'ap_mine' THEN 1 WHEN &quot;class_cue&quot; = 'unknown' THEN 2 ELSE 3 END) - round(1000 * max(abs(&quot;contrast_day_k&quot;), abs(&quot;contrast_night_k&quot;))))">
+  <attributetableconfig actionWidgetStyle="dropDown" sortExpression="coalesce(attribute('priority'), 1000000 * (CASE WHEN &quot;class_cue&quot; = 'at_mine' THEN 0 WHEN &quot;class_cue&quot; = 'ap_mine' THEN 1 WHEN &quot;class_cue&quot; = 'unknown' THEN 2 ELSE 3 END) - round(1000 * max(abs(&quot;contrast_day_k&quot;), abs(&quot;contrast_night_k&quot;))))" sortOrder="0">
     <columns>
-      <column hidden="0" width="-1" type="field" name="anomaly_id"/>
-      <column hidden="0" width="-1" type="field" name="polarity"/>
-      <column hidden="0" width="-1" type="field" name="area_m2"/>
-      <column hidden="0" width="-1" type="field" name="p_mine"/>
-      <column hidden="0" width="-1" type="field" name="priority"/>
-      <column hidden="0" width="-1" type="field" name="cue_confidence"/>
-      <column hidden="0" width="-1" type="field" name="set_aside_reason"/>
-      <column hidden="0" width="-1" type="field" name="short_id"/>
-      <column hidden="0" width="-1" type="field" name="depth"/>
-      <column hidden="0" width="-1" type="field" name="diffusivity"/>
-      <column hidden="0" width="-1" type="field" name="likelihood"/>
-      <column hidden="0" width="-1" type="field" name="cue_confidence_pct"/>
-      <column hidden="1" width="-1" type="actions"/>
+      <column type="field" hidden="0" name="anomaly_id" width="-1"/>
+      <column type="field" hidden="0" name="polarity" width="-1"/>
+      <column type="field" hidden="0" name="area_m2" width="-1"/>
+      <column type="field" hidden="0" name="p_mine" width="-1"/>
+      <column type="field" hidden="0" name="priority" width="-1"/>
+      <column type="field" hidden="0" name="cue_confidence" width="-1"/>
+      <column type="field" hidden="0" name="set_aside_reason" width="-1"/>
+      <column type="field" hidden="0" name="short_id" width="-1"/>
+      <column type="field" hidden="0" name="depth" width="-1"/>
+      <column type="field" hidden="0" name="diffusivity" width="-1"/>
+      <column type="field" hidden="0" name="likelihood" width="-1"/>
+      <column type="field" hidden="0" name="cue_confidence_pct" width="-1"/>
+      <column type="actions" hidden="1" width="-1"/>
     </columns>
   </attributetableconfig>
   <conditionalstyles>
@@ -669,58 +674,58 @@
   <featformsuppress>0</featformsuppress>
   <editorlayout>tablayout</editorlayout>
   <attributeEditorForm>
-    <attributeEditorContainer columnCount="1" showLabel="1" groupBox="0" visibilityExpressionEnabled="0" name="Suspect" visibilityExpression="">
-      <attributeEditorContainer columnCount="1" showLabel="1" groupBox="1" visibilityExpressionEnabled="0" name="Identification" visibilityExpression="">
-        <attributeEditorField showLabel="1" index="27" name="short_id"/>
-        <attributeEditorField showLabel="1" index="0" name="anomaly_id"/>
-        <attributeEditorField showLabel="1" index="17" name="priority"/>
-        <attributeEditorField showLabel="1" index="14" name="class_cue"/>
-        <attributeEditorField showLabel="1" index="30" name="likelihood"/>
-        <attributeEditorField showLabel="1" index="31" name="cue_confidence_pct"/>
-        <attributeEditorField showLabel="1" index="12" name="status"/>
-        <attributeEditorField showLabel="1" index="13" name="polarity"/>
-        <attributeEditorField showLabel="1" index="18" name="set_aside_reason"/>
+    <attributeEditorContainer name="Suspect" columnCount="1" showLabel="1" groupBox="0" visibilityExpressionEnabled="0" visibilityExpression="">
+      <attributeEditorContainer name="Identification" columnCount="1" showLabel="1" groupBox="1" visibilityExpressionEnabled="0" visibilityExpression="">
+        <attributeEditorField index="27" name="short_id" showLabel="1"/>
+        <attributeEditorField index="0" name="anomaly_id" showLabel="1"/>
+        <attributeEditorField index="17" name="priority" showLabel="1"/>
+        <attributeEditorField index="14" name="class_cue" showLabel="1"/>
+        <attributeEditorField index="30" name="likelihood" showLabel="1"/>
+        <attributeEditorField index="31" name="cue_confidence_pct" showLabel="1"/>
+        <attributeEditorField index="12" name="status" showLabel="1"/>
+        <attributeEditorField index="13" name="polarity" showLabel="1"/>
+        <attributeEditorField index="18" name="set_aside_reason" showLabel="1"/>
       </attributeEditorContainer>
-      <attributeEditorContainer columnCount="1" showLabel="1" groupBox="1" visibilityExpressionEnabled="0" name="Burial depth and soil" visibilityExpression="">
-        <attributeEditorField showLabel="1" index="28" name="depth"/>
-        <attributeEditorField showLabel="1" index="29" name="diffusivity"/>
+      <attributeEditorContainer name="Burial depth and soil" columnCount="1" showLabel="1" groupBox="1" visibilityExpressionEnabled="0" visibilityExpression="">
+        <attributeEditorField index="28" name="depth" showLabel="1"/>
+        <attributeEditorField index="29" name="diffusivity" showLabel="1"/>
       </attributeEditorContainer>
-      <attributeEditorContainer columnCount="1" showLabel="1" groupBox="1" visibilityExpressionEnabled="0" name="Thermal contrast" visibilityExpression="">
-        <attributeEditorField showLabel="1" index="20" name="contrast_day_k"/>
-        <attributeEditorField showLabel="1" index="21" name="contrast_night_k"/>
-        <attributeEditorField showLabel="1" index="22" name="mine_curve_r"/>
-        <attributeEditorField showLabel="1" index="23" name="mine_curve_level"/>
-        <attributeEditorField showLabel="1" index="19" name="n_scans"/>
+      <attributeEditorContainer name="Thermal contrast" columnCount="1" showLabel="1" groupBox="1" visibilityExpressionEnabled="0" visibilityExpression="">
+        <attributeEditorField index="20" name="contrast_day_k" showLabel="1"/>
+        <attributeEditorField index="21" name="contrast_night_k" showLabel="1"/>
+        <attributeEditorField index="22" name="mine_curve_r" showLabel="1"/>
+        <attributeEditorField index="23" name="mine_curve_level" showLabel="1"/>
+        <attributeEditorField index="19" name="n_scans" showLabel="1"/>
       </attributeEditorContainer>
-      <attributeEditorContainer columnCount="1" showLabel="1" groupBox="1" visibilityExpressionEnabled="0" name="Shape" visibilityExpression="">
-        <attributeEditorField showLabel="1" index="6" name="diameter_m"/>
-        <attributeEditorField showLabel="1" index="5" name="area_m2"/>
-        <attributeEditorField showLabel="1" index="7" name="circularity"/>
-      </attributeEditorContainer>
-    </attributeEditorContainer>
-    <attributeEditorContainer columnCount="1" showLabel="1" groupBox="0" visibilityExpressionEnabled="0" name="Contrast curve" visibilityExpression="">
-      <attributeEditorContainer columnCount="1" showLabel="1" groupBox="1" visibilityExpressionEnabled="0" name="Contrast curve" visibilityExpression="">
-        <attributeEditorField showLabel="1" index="25" name="figure"/>
+      <attributeEditorContainer name="Shape" columnCount="1" showLabel="1" groupBox="1" visibilityExpressionEnabled="0" visibilityExpression="">
+        <attributeEditorField index="6" name="diameter_m" showLabel="1"/>
+        <attributeEditorField index="5" name="area_m2" showLabel="1"/>
+        <attributeEditorField index="7" name="circularity" showLabel="1"/>
       </attributeEditorContainer>
     </attributeEditorContainer>
-    <attributeEditorContainer columnCount="1" showLabel="1" groupBox="0" visibilityExpressionEnabled="0" name="Position" visibilityExpression="">
-      <attributeEditorContainer columnCount="1" showLabel="1" groupBox="1" visibilityExpressionEnabled="0" name="Position" visibilityExpression="">
-        <attributeEditorField showLabel="1" index="1" name="x"/>
-        <attributeEditorField showLabel="1" index="2" name="y"/>
-        <attributeEditorField showLabel="1" index="3" name="lat"/>
-        <attributeEditorField showLabel="1" index="4" name="lon"/>
-        <attributeEditorField showLabel="1" index="24" name="fix_quality"/>
+    <attributeEditorContainer name="Contrast curve" columnCount="1" showLabel="1" groupBox="0" visibilityExpressionEnabled="0" visibilityExpression="">
+      <attributeEditorContainer name="Contrast curve" columnCount="1" showLabel="1" groupBox="1" visibilityExpressionEnabled="0" visibilityExpression="">
+        <attributeEditorField index="25" name="figure" showLabel="1"/>
       </attributeEditorContainer>
     </attributeEditorContainer>
-    <attributeEditorContainer columnCount="1" showLabel="1" groupBox="0" visibilityExpressionEnabled="0" name="Stored values" visibilityExpression="">
-      <attributeEditorContainer columnCount="1" showLabel="1" groupBox="1" visibilityExpressionEnabled="0" name="Stored values" visibilityExpression="">
-        <attributeEditorField showLabel="1" index="8" name="depth_m"/>
-        <attributeEditorField showLabel="1" index="9" name="depth_sigma_m"/>
-        <attributeEditorField showLabel="1" index="10" name="diffusivity_m2s"/>
-        <attributeEditorField showLabel="1" index="11" name="diffusivity_sigma_m2s"/>
-        <attributeEditorField showLabel="1" index="16" name="p_mine"/>
-        <attributeEditorField showLabel="1" index="15" name="cue_confidence"/>
-        <attributeEditorField showLabel="1" index="26" name="contrast_series"/>
+    <attributeEditorContainer name="Position" columnCount="1" showLabel="1" groupBox="0" visibilityExpressionEnabled="0" visibilityExpression="">
+      <attributeEditorContainer name="Position" columnCount="1" showLabel="1" groupBox="1" visibilityExpressionEnabled="0" visibilityExpression="">
+        <attributeEditorField index="1" name="x" showLabel="1"/>
+        <attributeEditorField index="2" name="y" showLabel="1"/>
+        <attributeEditorField index="3" name="lat" showLabel="1"/>
+        <attributeEditorField index="4" name="lon" showLabel="1"/>
+        <attributeEditorField index="24" name="fix_quality" showLabel="1"/>
+      </attributeEditorContainer>
+    </attributeEditorContainer>
+    <attributeEditorContainer name="Stored values" columnCount="1" showLabel="1" groupBox="0" visibilityExpressionEnabled="0" visibilityExpression="">
+      <attributeEditorContainer name="Stored values" columnCount="1" showLabel="1" groupBox="1" visibilityExpressionEnabled="0" visibilityExpression="">
+        <attributeEditorField index="8" name="depth_m" showLabel="1"/>
+        <attributeEditorField index="9" name="depth_sigma_m" showLabel="1"/>
+        <attributeEditorField index="10" name="diffusivity_m2s" showLabel="1"/>
+        <attributeEditorField index="11" name="diffusivity_sigma_m2s" showLabel="1"/>
+        <attributeEditorField index="16" name="p_mine" showLabel="1"/>
+        <attributeEditorField index="15" name="cue_confidence" showLabel="1"/>
+        <attributeEditorField index="26" name="contrast_series" showLabel="1"/>
       </attributeEditorContainer>
     </attributeEditorContainer>
   </attributeEditorForm>

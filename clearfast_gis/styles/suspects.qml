@@ -1,300 +1,300 @@
 <!DOCTYPE qgis PUBLIC 'http://mrcc.com/qgis.dtd' 'SYSTEM'>
-<qgis styleCategories="Symbology|Labeling|Fields|Forms|MapTips|AttributeTable|Rendering" simplifyAlgorithm="0" simplifyLocal="1" version="3.22.16-Białowieża" minScale="100000000" simplifyDrawingHints="1" labelsEnabled="1" hasScaleBasedVisibilityFlag="0" maxScale="0" symbologyReferenceScale="-1" simplifyDrawingTol="1" simplifyMaxScale="1">
-  <renderer-v2 referencescale="-1" enableorderby="1" type="RuleRenderer" forceraster="0" symbollevels="0">
-    <rules key="{b3332ffe-1d0d-455c-aff3-28b771d8a9c1}">
-      <rule key="{4e978aa3-f825-41a3-ba25-bcef77e44dd2}" label="AT mine indication" symbol="0" filter="(coalesce(attribute('p_mine') >= 0.5, &quot;class_cue&quot; IN ('at_mine', 'ap_mine'))) AND &quot;class_cue&quot; = 'at_mine'"/>
-      <rule key="{9cefae6f-6779-4258-b916-a4ce73c9ddff}" label="AP mine indication" symbol="1" filter="(coalesce(attribute('p_mine') >= 0.5, &quot;class_cue&quot; IN ('at_mine', 'ap_mine'))) AND &quot;class_cue&quot; = 'ap_mine'"/>
-      <rule key="{8aff5371-e8ed-4b4b-b322-bf85429b63df}" label="Mine indication, other cue" symbol="2" filter="(coalesce(attribute('p_mine') >= 0.5, &quot;class_cue&quot; IN ('at_mine', 'ap_mine'))) AND coalesce(&quot;class_cue&quot; NOT IN ('at_mine', 'ap_mine'), true)"/>
-      <rule key="{96917c81-33f4-48e4-b1d9-706aaa29404d}" label="Other suspect" symbol="3" filter="NOT (coalesce(attribute('p_mine') >= 0.5, &quot;class_cue&quot; IN ('at_mine', 'ap_mine'))) AND coalesce(&quot;class_cue&quot; &lt;> 'clutter', true)"/>
-      <rule checkstate="0" key="{d654dd4f-cdb7-44cd-a15c-db9a69a4042b}" label="Clutter" symbol="4" filter="NOT (coalesce(attribute('p_mine') >= 0.5, &quot;class_cue&quot; IN ('at_mine', 'ap_mine'))) AND &quot;class_cue&quot; = 'clutter'"/>
+<qgis minScale="100000000" labelsEnabled="1" version="3.22.16-Białowieża" maxScale="0" simplifyLocal="1" styleCategories="Symbology|Labeling|Fields|Forms|MapTips|AttributeTable|Rendering" simplifyDrawingTol="1" simplifyDrawingHints="1" simplifyAlgorithm="0" simplifyMaxScale="1" hasScaleBasedVisibilityFlag="0" symbologyReferenceScale="-1">
+  <renderer-v2 symbollevels="0" type="RuleRenderer" referencescale="-1" forceraster="0" enableorderby="1">
+    <rules key="{37625eb4-1b25-4a3a-81e1-5efa65dbff30}">
+      <rule filter="(coalesce(attribute('p_mine') >= 0.5, &quot;class_cue&quot; IN ('at_mine', 'ap_mine'))) AND &quot;class_cue&quot; = 'at_mine'" label="AT mine indication" symbol="0" key="{f025c233-dc17-4090-a91d-480cd6074857}"/>
+      <rule filter="(coalesce(attribute('p_mine') >= 0.5, &quot;class_cue&quot; IN ('at_mine', 'ap_mine'))) AND &quot;class_cue&quot; = 'ap_mine'" label="AP mine indication" symbol="1" key="{e9076c3a-57ba-4c05-a610-610137a4cf43}"/>
+      <rule filter="(coalesce(attribute('p_mine') >= 0.5, &quot;class_cue&quot; IN ('at_mine', 'ap_mine'))) AND coalesce(&quot;class_cue&quot; NOT IN ('at_mine', 'ap_mine'), true)" label="Mine indication, other cue" symbol="2" key="{18a75b7e-96fb-4488-b750-0cbd3e82e512}"/>
+      <rule filter="NOT (coalesce(attribute('p_mine') >= 0.5, &quot;class_cue&quot; IN ('at_mine', 'ap_mine'))) AND coalesce(&quot;class_cue&quot; &lt;> 'clutter', true)" label="Other suspect" symbol="3" key="{e94847bc-8550-4fe2-8e95-bd1474228ca7}"/>
+      <rule filter="NOT (coalesce(attribute('p_mine') >= 0.5, &quot;class_cue&quot; IN ('at_mine', 'ap_mine'))) AND &quot;class_cue&quot; = 'clutter'" label="Clutter" checkstate="0" symbol="4" key="{de501508-a9bc-487b-8ea6-652a7a9263f0}"/>
     </rules>
     <symbols>
-      <symbol type="marker" force_rhr="0" clip_to_extent="1" name="0" alpha="1">
+      <symbol type="marker" alpha="1" name="0" force_rhr="0" clip_to_extent="1">
         <data_defined_properties>
           <Option type="Map">
-            <Option type="QString" name="name" value=""/>
+            <Option value="" type="QString" name="name"/>
             <Option name="properties"/>
-            <Option type="QString" name="type" value="collection"/>
+            <Option value="collection" type="QString" name="type"/>
           </Option>
         </data_defined_properties>
-        <layer enabled="1" class="SimpleMarker" locked="0" pass="0">
+        <layer enabled="1" class="SimpleMarker" pass="0" locked="0">
           <Option type="Map">
-            <Option type="QString" name="angle" value="0"/>
-            <Option type="QString" name="cap_style" value="square"/>
-            <Option type="QString" name="color" value="227,26,28,255"/>
-            <Option type="QString" name="horizontal_anchor_point" value="1"/>
-            <Option type="QString" name="joinstyle" value="bevel"/>
-            <Option type="QString" name="name" value="triangle"/>
-            <Option type="QString" name="offset" value="0,0"/>
-            <Option type="QString" name="offset_map_unit_scale" value="3x:0,0,0,0,0,0"/>
-            <Option type="QString" name="offset_unit" value="MM"/>
-            <Option type="QString" name="outline_color" value="35,35,35,255"/>
-            <Option type="QString" name="outline_style" value="solid"/>
-            <Option type="QString" name="outline_width" value="0.3"/>
-            <Option type="QString" name="outline_width_map_unit_scale" value="3x:0,0,0,0,0,0"/>
-            <Option type="QString" name="outline_width_unit" value="MM"/>
-            <Option type="QString" name="scale_method" value="diameter"/>
-            <Option type="QString" name="size" value="5"/>
-            <Option type="QString" name="size_map_unit_scale" value="3x:0,0,0,0,0,0"/>
-            <Option type="QString" name="size_unit" value="MM"/>
-            <Option type="QString" name="vertical_anchor_point" value="1"/>
+            <Option value="0" type="QString" name="angle"/>
+            <Option value="square" type="QString" name="cap_style"/>
+            <Option value="227,26,28,255" type="QString" name="color"/>
+            <Option value="1" type="QString" name="horizontal_anchor_point"/>
+            <Option value="bevel" type="QString" name="joinstyle"/>
+            <Option value="triangle" type="QString" name="name"/>
+            <Option value="0,0" type="QString" name="offset"/>
+            <Option value="3x:0,0,0,0,0,0" type="QString" name="offset_map_unit_scale"/>
+            <Option value="MM" type="QString" name="offset_unit"/>
+            <Option value="35,35,35,255" type="QString" name="outline_color"/>
+            <Option value="solid" type="QString" name="outline_style"/>
+            <Option value="0.3" type="QString" name="outline_width"/>
+            <Option value="3x:0,0,0,0,0,0" type="QString" name="outline_width_map_unit_scale"/>
+            <Option value="MM" type="QString" name="outline_width_unit"/>
+            <Option value="diameter" type="QString" name="scale_method"/>
+            <Option value="5" type="QString" name="size"/>
+            <Option value="3x:0,0,0,0,0,0" type="QString" name="size_map_unit_scale"/>
+            <Option value="MM" type="QString" name="size_unit"/>
+            <Option value="1" type="QString" name="vertical_anchor_point"/>
           </Option>
-          <prop v="0" k="angle"/>
-          <prop v="square" k="cap_style"/>
-          <prop v="227,26,28,255" k="color"/>
-          <prop v="1" k="horizontal_anchor_point"/>
-          <prop v="bevel" k="joinstyle"/>
-          <prop v="triangle" k="name"/>
-          <prop v="0,0" k="offset"/>
-          <prop v="3x:0,0,0,0,0,0" k="offset_map_unit_scale"/>
-          <prop v="MM" k="offset_unit"/>
-          <prop v="35,35,35,255" k="outline_color"/>
-          <prop v="solid" k="outline_style"/>
-          <prop v="0.3" k="outline_width"/>
-          <prop v="3x:0,0,0,0,0,0" k="outline_width_map_unit_scale"/>
-          <prop v="MM" k="outline_width_unit"/>
-          <prop v="diameter" k="scale_method"/>
-          <prop v="5" k="size"/>
-          <prop v="3x:0,0,0,0,0,0" k="size_map_unit_scale"/>
-          <prop v="MM" k="size_unit"/>
-          <prop v="1" k="vertical_anchor_point"/>
+          <prop k="angle" v="0"/>
+          <prop k="cap_style" v="square"/>
+          <prop k="color" v="227,26,28,255"/>
+          <prop k="horizontal_anchor_point" v="1"/>
+          <prop k="joinstyle" v="bevel"/>
+          <prop k="name" v="triangle"/>
+          <prop k="offset" v="0,0"/>
+          <prop k="offset_map_unit_scale" v="3x:0,0,0,0,0,0"/>
+          <prop k="offset_unit" v="MM"/>
+          <prop k="outline_color" v="35,35,35,255"/>
+          <prop k="outline_style" v="solid"/>
+          <prop k="outline_width" v="0.3"/>
+          <prop k="outline_width_map_unit_scale" v="3x:0,0,0,0,0,0"/>
+          <prop k="outline_width_unit" v="MM"/>
+          <prop k="scale_method" v="diameter"/>
+          <prop k="size" v="5"/>
+          <prop k="size_map_unit_scale" v="3x:0,0,0,0,0,0"/>
+          <prop k="size_unit" v="MM"/>
+          <prop k="vertical_anchor_point" v="1"/>
           <data_defined_properties>
             <Option type="Map">
-              <Option type="QString" name="name" value=""/>
+              <Option value="" type="QString" name="name"/>
               <Option name="properties"/>
-              <Option type="QString" name="type" value="collection"/>
+              <Option value="collection" type="QString" name="type"/>
             </Option>
           </data_defined_properties>
         </layer>
       </symbol>
-      <symbol type="marker" force_rhr="0" clip_to_extent="1" name="1" alpha="1">
+      <symbol type="marker" alpha="1" name="1" force_rhr="0" clip_to_extent="1">
         <data_defined_properties>
           <Option type="Map">
-            <Option type="QString" name="name" value=""/>
+            <Option value="" type="QString" name="name"/>
             <Option name="properties"/>
-            <Option type="QString" name="type" value="collection"/>
+            <Option value="collection" type="QString" name="type"/>
           </Option>
         </data_defined_properties>
-        <layer enabled="1" class="SimpleMarker" locked="0" pass="0">
+        <layer enabled="1" class="SimpleMarker" pass="0" locked="0">
           <Option type="Map">
-            <Option type="QString" name="angle" value="0"/>
-            <Option type="QString" name="cap_style" value="square"/>
-            <Option type="QString" name="color" value="227,26,28,255"/>
-            <Option type="QString" name="horizontal_anchor_point" value="1"/>
-            <Option type="QString" name="joinstyle" value="bevel"/>
-            <Option type="QString" name="name" value="triangle"/>
-            <Option type="QString" name="offset" value="0,0"/>
-            <Option type="QString" name="offset_map_unit_scale" value="3x:0,0,0,0,0,0"/>
-            <Option type="QString" name="offset_unit" value="MM"/>
-            <Option type="QString" name="outline_color" value="35,35,35,255"/>
-            <Option type="QString" name="outline_style" value="solid"/>
-            <Option type="QString" name="outline_width" value="0.3"/>
-            <Option type="QString" name="outline_width_map_unit_scale" value="3x:0,0,0,0,0,0"/>
-            <Option type="QString" name="outline_width_unit" value="MM"/>
-            <Option type="QString" name="scale_method" value="diameter"/>
-            <Option type="QString" name="size" value="4"/>
-            <Option type="QString" name="size_map_unit_scale" value="3x:0,0,0,0,0,0"/>
-            <Option type="QString" name="size_unit" value="MM"/>
-            <Option type="QString" name="vertical_anchor_point" value="1"/>
+            <Option value="0" type="QString" name="angle"/>
+            <Option value="square" type="QString" name="cap_style"/>
+            <Option value="227,26,28,255" type="QString" name="color"/>
+            <Option value="1" type="QString" name="horizontal_anchor_point"/>
+            <Option value="bevel" type="QString" name="joinstyle"/>
+            <Option value="triangle" type="QString" name="name"/>
+            <Option value="0,0" type="QString" name="offset"/>
+            <Option value="3x:0,0,0,0,0,0" type="QString" name="offset_map_unit_scale"/>
+            <Option value="MM" type="QString" name="offset_unit"/>
+            <Option value="35,35,35,255" type="QString" name="outline_color"/>
+            <Option value="solid" type="QString" name="outline_style"/>
+            <Option value="0.3" type="QString" name="outline_width"/>
+            <Option value="3x:0,0,0,0,0,0" type="QString" name="outline_width_map_unit_scale"/>
+            <Option value="MM" type="QString" name="outline_width_unit"/>
+            <Option value="diameter" type="QString" name="scale_method"/>
+            <Option value="4" type="QString" name="size"/>
+            <Option value="3x:0,0,0,0,0,0" type="QString" name="size_map_unit_scale"/>
+            <Option value="MM" type="QString" name="size_unit"/>
+            <Option value="1" type="QString" name="vertical_anchor_point"/>
           </Option>
-          <prop v="0" k="angle"/>
-          <prop v="square" k="cap_style"/>
-          <prop v="227,26,28,255" k="color"/>
-          <prop v="1" k="horizontal_anchor_point"/>
-          <prop v="bevel" k="joinstyle"/>
-          <prop v="triangle" k="name"/>
-          <prop v="0,0" k="offset"/>
-          <prop v="3x:0,0,0,0,0,0" k="offset_map_unit_scale"/>
-          <prop v="MM" k="offset_unit"/>
-          <prop v="35,35,35,255" k="outline_color"/>
-          <prop v="solid" k="outline_style"/>
-          <prop v="0.3" k="outline_width"/>
-          <prop v="3x:0,0,0,0,0,0" k="outline_width_map_unit_scale"/>
-          <prop v="MM" k="outline_width_unit"/>
-          <prop v="diameter" k="scale_method"/>
-          <prop v="4" k="size"/>
-          <prop v="3x:0,0,0,0,0,0" k="size_map_unit_scale"/>
-          <prop v="MM" k="size_unit"/>
-          <prop v="1" k="vertical_anchor_point"/>
+          <prop k="angle" v="0"/>
+          <prop k="cap_style" v="square"/>
+          <prop k="color" v="227,26,28,255"/>
+          <prop k="horizontal_anchor_point" v="1"/>
+          <prop k="joinstyle" v="bevel"/>
+          <prop k="name" v="triangle"/>
+          <prop k="offset" v="0,0"/>
+          <prop k="offset_map_unit_scale" v="3x:0,0,0,0,0,0"/>
+          <prop k="offset_unit" v="MM"/>
+          <prop k="outline_color" v="35,35,35,255"/>
+          <prop k="outline_style" v="solid"/>
+          <prop k="outline_width" v="0.3"/>
+          <prop k="outline_width_map_unit_scale" v="3x:0,0,0,0,0,0"/>
+          <prop k="outline_width_unit" v="MM"/>
+          <prop k="scale_method" v="diameter"/>
+          <prop k="size" v="4"/>
+          <prop k="size_map_unit_scale" v="3x:0,0,0,0,0,0"/>
+          <prop k="size_unit" v="MM"/>
+          <prop k="vertical_anchor_point" v="1"/>
           <data_defined_properties>
             <Option type="Map">
-              <Option type="QString" name="name" value=""/>
+              <Option value="" type="QString" name="name"/>
               <Option name="properties"/>
-              <Option type="QString" name="type" value="collection"/>
+              <Option value="collection" type="QString" name="type"/>
             </Option>
           </data_defined_properties>
         </layer>
       </symbol>
-      <symbol type="marker" force_rhr="0" clip_to_extent="1" name="2" alpha="1">
+      <symbol type="marker" alpha="1" name="2" force_rhr="0" clip_to_extent="1">
         <data_defined_properties>
           <Option type="Map">
-            <Option type="QString" name="name" value=""/>
+            <Option value="" type="QString" name="name"/>
             <Option name="properties"/>
-            <Option type="QString" name="type" value="collection"/>
+            <Option value="collection" type="QString" name="type"/>
           </Option>
         </data_defined_properties>
-        <layer enabled="1" class="SimpleMarker" locked="0" pass="0">
+        <layer enabled="1" class="SimpleMarker" pass="0" locked="0">
           <Option type="Map">
-            <Option type="QString" name="angle" value="0"/>
-            <Option type="QString" name="cap_style" value="square"/>
-            <Option type="QString" name="color" value="227,26,28,255"/>
-            <Option type="QString" name="horizontal_anchor_point" value="1"/>
-            <Option type="QString" name="joinstyle" value="bevel"/>
-            <Option type="QString" name="name" value="circle"/>
-            <Option type="QString" name="offset" value="0,0"/>
-            <Option type="QString" name="offset_map_unit_scale" value="3x:0,0,0,0,0,0"/>
-            <Option type="QString" name="offset_unit" value="MM"/>
-            <Option type="QString" name="outline_color" value="35,35,35,255"/>
-            <Option type="QString" name="outline_style" value="solid"/>
-            <Option type="QString" name="outline_width" value="0.3"/>
-            <Option type="QString" name="outline_width_map_unit_scale" value="3x:0,0,0,0,0,0"/>
-            <Option type="QString" name="outline_width_unit" value="MM"/>
-            <Option type="QString" name="scale_method" value="diameter"/>
-            <Option type="QString" name="size" value="3.2"/>
-            <Option type="QString" name="size_map_unit_scale" value="3x:0,0,0,0,0,0"/>
-            <Option type="QString" name="size_unit" value="MM"/>
-            <Option type="QString" name="vertical_anchor_point" value="1"/>
+            <Option value="0" type="QString" name="angle"/>
+            <Option value="square" type="QString" name="cap_style"/>
+            <Option value="227,26,28,255" type="QString" name="color"/>
+            <Option value="1" type="QString" name="horizontal_anchor_point"/>
+            <Option value="bevel" type="QString" name="joinstyle"/>
+            <Option value="circle" type="QString" name="name"/>
+            <Option value="0,0" type="QString" name="offset"/>
+            <Option value="3x:0,0,0,0,0,0" type="QString" name="offset_map_unit_scale"/>
+            <Option value="MM" type="QString" name="offset_unit"/>
+            <Option value="35,35,35,255" type="QString" name="outline_color"/>
+            <Option value="solid" type="QString" name="outline_style"/>
+            <Option value="0.3" type="QString" name="outline_width"/>
+            <Option value="3x:0,0,0,0,0,0" type="QString" name="outline_width_map_unit_scale"/>
+            <Option value="MM" type="QString" name="outline_width_unit"/>
+            <Option value="diameter" type="QString" name="scale_method"/>
+            <Option value="3.2" type="QString" name="size"/>
+            <Option value="3x:0,0,0,0,0,0" type="QString" name="size_map_unit_scale"/>
+            <Option value="MM" type="QString" name="size_unit"/>
+            <Option value="1" type="QString" name="vertical_anchor_point"/>
           </Option>
-          <prop v="0" k="angle"/>
-          <prop v="square" k="cap_style"/>
-          <prop v="227,26,28,255" k="color"/>
-          <prop v="1" k="horizontal_anchor_point"/>
-          <prop v="bevel" k="joinstyle"/>
-          <prop v="circle" k="name"/>
-          <prop v="0,0" k="offset"/>
-          <prop v="3x:0,0,0,0,0,0" k="offset_map_unit_scale"/>
-          <prop v="MM" k="offset_unit"/>
-          <prop v="35,35,35,255" k="outline_color"/>
-          <prop v="solid" k="outline_style"/>
-          <prop v="0.3" k="outline_width"/>
-          <prop v="3x:0,0,0,0,0,0" k="outline_width_map_unit_scale"/>
-          <prop v="MM" k="outline_width_unit"/>
-          <prop v="diameter" k="scale_method"/>
-          <prop v="3.2" k="size"/>
-          <prop v="3x:0,0,0,0,0,0" k="size_map_unit_scale"/>
-          <prop v="MM" k="size_unit"/>
-          <prop v="1" k="vertical_anchor_point"/>
+          <prop k="angle" v="0"/>
+          <prop k="cap_style" v="square"/>
+          <prop k="color" v="227,26,28,255"/>
+          <prop k="horizontal_anchor_point" v="1"/>
+          <prop k="joinstyle" v="bevel"/>
+          <prop k="name" v="circle"/>
+          <prop k="offset" v="0,0"/>
+          <prop k="offset_map_unit_scale" v="3x:0,0,0,0,0,0"/>
+          <prop k="offset_unit" v="MM"/>
+          <prop k="outline_color" v="35,35,35,255"/>
+          <prop k="outline_style" v="solid"/>
+          <prop k="outline_width" v="0.3"/>
+          <prop k="outline_width_map_unit_scale" v="3x:0,0,0,0,0,0"/>
+          <prop k="outline_width_unit" v="MM"/>
+          <prop k="scale_method" v="diameter"/>
+          <prop k="size" v="3.2"/>
+          <prop k="size_map_unit_scale" v="3x:0,0,0,0,0,0"/>
+          <prop k="size_unit" v="MM"/>
+          <prop k="vertical_anchor_point" v="1"/>
           <data_defined_properties>
             <Option type="Map">
-              <Option type="QString" name="name" value=""/>
+              <Option value="" type="QString" name="name"/>
               <Option name="properties"/>
-              <Option type="QString" name="type" value="collection"/>
+              <Option value="collection" type="QString" name="type"/>
             </Option>
           </data_defined_properties>
         </layer>
       </symbol>
-      <symbol type="marker" force_rhr="0" clip_to_extent="1" name="3" alpha="0.6">
+      <symbol type="marker" alpha="0.6" name="3" force_rhr="0" clip_to_extent="1">
         <data_defined_properties>
           <Option type="Map">
-            <Option type="QString" name="name" value=""/>
+            <Option value="" type="QString" name="name"/>
             <Option name="properties"/>
-            <Option type="QString" name="type" value="collection"/>
+            <Option value="collection" type="QString" name="type"/>
           </Option>
         </data_defined_properties>
-        <layer enabled="1" class="SimpleMarker" locked="0" pass="0">
+        <layer enabled="1" class="SimpleMarker" pass="0" locked="0">
           <Option type="Map">
-            <Option type="QString" name="angle" value="0"/>
-            <Option type="QString" name="cap_style" value="square"/>
-            <Option type="QString" name="color" value="255,127,0,255"/>
-            <Option type="QString" name="horizontal_anchor_point" value="1"/>
-            <Option type="QString" name="joinstyle" value="bevel"/>
-            <Option type="QString" name="name" value="circle"/>
-            <Option type="QString" name="offset" value="0,0"/>
-            <Option type="QString" name="offset_map_unit_scale" value="3x:0,0,0,0,0,0"/>
-            <Option type="QString" name="offset_unit" value="MM"/>
-            <Option type="QString" name="outline_color" value="90,90,90,255"/>
-            <Option type="QString" name="outline_style" value="solid"/>
-            <Option type="QString" name="outline_width" value="0.3"/>
-            <Option type="QString" name="outline_width_map_unit_scale" value="3x:0,0,0,0,0,0"/>
-            <Option type="QString" name="outline_width_unit" value="MM"/>
-            <Option type="QString" name="scale_method" value="diameter"/>
-            <Option type="QString" name="size" value="2.4"/>
-            <Option type="QString" name="size_map_unit_scale" value="3x:0,0,0,0,0,0"/>
-            <Option type="QString" name="size_unit" value="MM"/>
-            <Option type="QString" name="vertical_anchor_point" value="1"/>
+            <Option value="0" type="QString" name="angle"/>
+            <Option value="square" type="QString" name="cap_style"/>
+            <Option value="255,127,0,255" type="QString" name="color"/>
+            <Option value="1" type="QString" name="horizontal_anchor_point"/>
+            <Option value="bevel" type="QString" name="joinstyle"/>
+            <Option value="circle" type="QString" name="name"/>
+            <Option value="0,0" type="QString" name="offset"/>
+            <Option value="3x:0,0,0,0,0,0" type="QString" name="offset_map_unit_scale"/>
+            <Option value="MM" type="QString" name="offset_unit"/>
+            <Option value="90,90,90,255" type="QString" name="outline_color"/>
+            <Option value="solid" type="QString" name="outline_style"/>
+            <Option value="0.3" type="QString" name="outline_width"/>
+            <Option value="3x:0,0,0,0,0,0" type="QString" name="outline_width_map_unit_scale"/>
+            <Option value="MM" type="QString" name="outline_width_unit"/>
+            <Option value="diameter" type="QString" name="scale_method"/>
+            <Option value="2.4" type="QString" name="size"/>
+            <Option value="3x:0,0,0,0,0,0" type="QString" name="size_map_unit_scale"/>
+            <Option value="MM" type="QString" name="size_unit"/>
+            <Option value="1" type="QString" name="vertical_anchor_point"/>
           </Option>
-          <prop v="0" k="angle"/>
-          <prop v="square" k="cap_style"/>
-          <prop v="255,127,0,255" k="color"/>
-          <prop v="1" k="horizontal_anchor_point"/>
-          <prop v="bevel" k="joinstyle"/>
-          <prop v="circle" k="name"/>
-          <prop v="0,0" k="offset"/>
-          <prop v="3x:0,0,0,0,0,0" k="offset_map_unit_scale"/>
-          <prop v="MM" k="offset_unit"/>
-          <prop v="90,90,90,255" k="outline_color"/>
-          <prop v="solid" k="outline_style"/>
-          <prop v="0.3" k="outline_width"/>
-          <prop v="3x:0,0,0,0,0,0" k="outline_width_map_unit_scale"/>
-          <prop v="MM" k="outline_width_unit"/>
-          <prop v="diameter" k="scale_method"/>
-          <prop v="2.4" k="size"/>
-          <prop v="3x:0,0,0,0,0,0" k="size_map_unit_scale"/>
-          <prop v="MM" k="size_unit"/>
-          <prop v="1" k="vertical_anchor_point"/>
+          <prop k="angle" v="0"/>
+          <prop k="cap_style" v="square"/>
+          <prop k="color" v="255,127,0,255"/>
+          <prop k="horizontal_anchor_point" v="1"/>
+          <prop k="joinstyle" v="bevel"/>
+          <prop k="name" v="circle"/>
+          <prop k="offset" v="0,0"/>
+          <prop k="offset_map_unit_scale" v="3x:0,0,0,0,0,0"/>
+          <prop k="offset_unit" v="MM"/>
+          <prop k="outline_color" v="90,90,90,255"/>
+          <prop k="outline_style" v="solid"/>
+          <prop k="outline_width" v="0.3"/>
+          <prop k="outline_width_map_unit_scale" v="3x:0,0,0,0,0,0"/>
+          <prop k="outline_width_unit" v="MM"/>
+          <prop k="scale_method" v="diameter"/>
+          <prop k="size" v="2.4"/>
+          <prop k="size_map_unit_scale" v="3x:0,0,0,0,0,0"/>
+          <prop k="size_unit" v="MM"/>
+          <prop k="vertical_anchor_point" v="1"/>
           <data_defined_properties>
             <Option type="Map">
-              <Option type="QString" name="name" value=""/>
+              <Option value="" type="QString" name="name"/>
               <Option name="properties"/>
-              <Option type="QString" name="type" value="collection"/>
+              <Option value="collection" type="QString" name="type"/>
             </Option>
           </data_defined_properties>
         </layer>
       </symbol>
-      <symbol type="marker" force_rhr="0" clip_to_extent="1" name="4" alpha="0.6">
+      <symbol type="marker" alpha="0.6" name="4" force_rhr="0" clip_to_extent="1">
         <data_defined_properties>
           <Option type="Map">
-            <Option type="QString" name="name" value=""/>
+            <Option value="" type="QString" name="name"/>
             <Option name="properties"/>
-            <Option type="QString" name="type" value="collection"/>
+            <Option value="collection" type="QString" name="type"/>
           </Option>
         </data_defined_properties>
-        <layer enabled="1" class="SimpleMarker" locked="0" pass="0">
+        <layer enabled="1" class="SimpleMarker" pass="0" locked="0">
           <Option type="Map">
-            <Option type="QString" name="angle" value="0"/>
-            <Option type="QString" name="cap_style" value="square"/>
-            <Option type="QString" name="color" value="150,150,150,255"/>
-            <Option type="QString" name="horizontal_anchor_point" value="1"/>
-            <Option type="QString" name="joinstyle" value="bevel"/>
-            <Option type="QString" name="name" value="circle"/>
-            <Option type="QString" name="offset" value="0,0"/>
-            <Option type="QString" name="offset_map_unit_scale" value="3x:0,0,0,0,0,0"/>
-            <Option type="QString" name="offset_unit" value="MM"/>
-            <Option type="QString" name="outline_color" value="90,90,90,255"/>
-            <Option type="QString" name="outline_style" value="solid"/>
-            <Option type="QString" name="outline_width" value="0.3"/>
-            <Option type="QString" name="outline_width_map_unit_scale" value="3x:0,0,0,0,0,0"/>
-            <Option type="QString" name="outline_width_unit" value="MM"/>
-            <Option type="QString" name="scale_method" value="diameter"/>
-            <Option type="QString" name="size" value="2"/>
-            <Option type="QString" name="size_map_unit_scale" value="3x:0,0,0,0,0,0"/>
-            <Option type="QString" name="size_unit" value="MM"/>
-            <Option type="QString" name="vertical_anchor_point" value="1"/>
+            <Option value="0" type="QString" name="angle"/>
+            <Option value="square" type="QString" name="cap_style"/>
+            <Option value="150,150,150,255" type="QString" name="color"/>
+            <Option value="1" type="QString" name="horizontal_anchor_point"/>
+            <Option value="bevel" type="QString" name="joinstyle"/>
+            <Option value="circle" type="QString" name="name"/>
+            <Option value="0,0" type="QString" name="offset"/>
+            <Option value="3x:0,0,0,0,0,0" type="QString" name="offset_map_unit_scale"/>
+            <Option value="MM" type="QString" name="offset_unit"/>
+            <Option value="90,90,90,255" type="QString" name="outline_color"/>
+            <Option value="solid" type="QString" name="outline_style"/>
+            <Option value="0.3" type="QString" name="outline_width"/>
+            <Option value="3x:0,0,0,0,0,0" type="QString" name="outline_width_map_unit_scale"/>
+            <Option value="MM" type="QString" name="outline_width_unit"/>
+            <Option value="diameter" type="QString" name="scale_method"/>
+            <Option value="2" type="QString" name="size"/>
+            <Option value="3x:0,0,0,0,0,0" type="QString" name="size_map_unit_scale"/>
+            <Option value="MM" type="QString" name="size_unit"/>
+            <Option value="1" type="QString" name="vertical_anchor_point"/>
           </Option>
-          <prop v="0" k="angle"/>
-          <prop v="square" k="cap_style"/>
-          <prop v="150,150,150,255" k="color"/>
-          <prop v="1" k="horizontal_anchor_point"/>
-          <prop v="bevel" k="joinstyle"/>
-          <prop v="circle" k="name"/>
-          <prop v="0,0" k="offset"/>
-          <prop v="3x:0,0,0,0,0,0" k="offset_map_unit_scale"/>
-          <prop v="MM" k="offset_unit"/>
-          <prop v="90,90,90,255" k="outline_color"/>
-          <prop v="solid" k="outline_style"/>
-          <prop v="0.3" k="outline_width"/>
-          <prop v="3x:0,0,0,0,0,0" k="outline_width_map_unit_scale"/>
-          <prop v="MM" k="outline_width_unit"/>
-          <prop v="diameter" k="scale_method"/>
-          <prop v="2" k="size"/>
-          <prop v="3x:0,0,0,0,0,0" k="size_map_unit_scale"/>
-          <prop v="MM" k="size_unit"/>
-          <prop v="1" k="vertical_anchor_point"/>
+          <prop k="angle" v="0"/>
+          <prop k="cap_style" v="square"/>
+          <prop k="color" v="150,150,150,255"/>
+          <prop k="horizontal_anchor_point" v="1"/>
+          <prop k="joinstyle" v="bevel"/>
+          <prop k="name" v="circle"/>
+          <prop k="offset" v="0,0"/>
+          <prop k="offset_map_unit_scale" v="3x:0,0,0,0,0,0"/>
+          <prop k="offset_unit" v="MM"/>
+          <prop k="outline_color" v="90,90,90,255"/>
+          <prop k="outline_style" v="solid"/>
+          <prop k="outline_width" v="0.3"/>
+          <prop k="outline_width_map_unit_scale" v="3x:0,0,0,0,0,0"/>
+          <prop k="outline_width_unit" v="MM"/>
+          <prop k="scale_method" v="diameter"/>
+          <prop k="size" v="2"/>
+          <prop k="size_map_unit_scale" v="3x:0,0,0,0,0,0"/>
+          <prop k="size_unit" v="MM"/>
+          <prop k="vertical_anchor_point" v="1"/>
           <data_defined_properties>
             <Option type="Map">
-              <Option type="QString" name="name" value=""/>
+              <Option value="" type="QString" name="name"/>
               <Option name="properties"/>
-              <Option type="QString" name="type" value="collection"/>
+              <Option value="collection" type="QString" name="type"/>
             </Option>
           </data_defined_properties>
         </layer>
@@ -305,99 +305,99 @@
     </orderby>
   </renderer-v2>
   <labeling type="rule-based">
-    <rules key="{f7ca3a2c-dbc3-4c9a-bcf3-fef5b7bf00d3}">
-      <rule key="{94a021f4-b2ca-485a-bc5e-3c56570c7db7}" filter="coalesce(attribute('p_mine') >= 0.5, &quot;class_cue&quot; IN ('at_mine', 'ap_mine'))" description="Mine indications">
+    <rules key="{1e3f0f55-5ab8-4204-9e2c-32118b3ed00a}">
+      <rule filter="coalesce(attribute('p_mine') >= 0.5, &quot;class_cue&quot; IN ('at_mine', 'ap_mine'))" description="Mine indications" key="{f343b243-cdac-42b7-9dea-bfc89c50c217}">
         <settings calloutType="simple">
-          <text-style capitalization="0" fontSize="9" fieldName="short_id" fontStrikeout="0" fontFamily="DejaVu Sans" fontItalic="0" textColor="120,0,0,255" isExpression="0" fontLetterSpacing="0" blendMode="0" previewBkgrdColor="255,255,255,255" fontSizeUnit="Point" allowHtml="0" fontWordSpacing="0" fontKerning="1" namedStyle="" textOrientation="horizontal" legendString="Aa" multilineHeight="1" fontUnderline="0" useSubstitutions="0" fontSizeMapUnitScale="3x:0,0,0,0,0,0" fontWeight="75" textOpacity="1">
+          <text-style fontStrikeout="0" fontSizeUnit="Point" fontLetterSpacing="0" fontSizeMapUnitScale="3x:0,0,0,0,0,0" textOrientation="horizontal" fontSize="9" fontItalic="0" allowHtml="0" textOpacity="1" fontWordSpacing="0" previewBkgrdColor="255,255,255,255" namedStyle="" useSubstitutions="0" legendString="Aa" fontKerning="1" fieldName="short_id" fontFamily="DejaVu Sans" isExpression="0" fontUnderline="0" textColor="120,0,0,255" multilineHeight="1" capitalization="0" blendMode="0" fontWeight="75">
             <families/>
-            <text-buffer bufferOpacity="1" bufferColor="255,255,255,255" bufferJoinStyle="128" bufferBlendMode="0" bufferNoFill="1" bufferSizeMapUnitScale="3x:0,0,0,0,0,0" bufferDraw="1" bufferSize="0.80000000000000004" bufferSizeUnits="MM"/>
-            <text-mask maskJoinStyle="128" maskEnabled="0" maskSizeUnits="MM" maskSizeMapUnitScale="3x:0,0,0,0,0,0" maskType="0" maskOpacity="1" maskedSymbolLayers="" maskSize="1.5"/>
-            <background shapeSizeMapUnitScale="3x:0,0,0,0,0,0" shapeFillColor="255,255,255,255" shapeBlendMode="0" shapeSizeUnit="MM" shapeBorderWidthMapUnitScale="3x:0,0,0,0,0,0" shapeOpacity="1" shapeRadiiUnit="MM" shapeSizeY="0" shapeBorderWidthUnit="MM" shapeOffsetY="0" shapeBorderWidth="0" shapeOffsetMapUnitScale="3x:0,0,0,0,0,0" shapeBorderColor="128,128,128,255" shapeRotation="0" shapeDraw="0" shapeRotationType="0" shapeSizeX="0" shapeRadiiY="0" shapeType="0" shapeOffsetUnit="MM" shapeSizeType="0" shapeSVGFile="" shapeJoinStyle="64" shapeOffsetX="0" shapeRadiiX="0" shapeRadiiMapUnitScale="3x:0,0,0,0,0,0">
-              <symbol type="fill" force_rhr="0" clip_to_extent="1" name="fillSymbol" alpha="1">
+            <text-buffer bufferColor="255,255,255,255" bufferNoFill="1" bufferDraw="1" bufferBlendMode="0" bufferSizeMapUnitScale="3x:0,0,0,0,0,0" bufferJoinStyle="128" bufferSize="0.80000000000000004" bufferSizeUnits="MM" bufferOpacity="1"/>
+            <text-mask maskEnabled="0" maskSizeUnits="MM" maskJoinStyle="128" maskOpacity="1" maskSizeMapUnitScale="3x:0,0,0,0,0,0" maskedSymbolLayers="" maskType="0" maskSize="1.5"/>
+            <background shapeRadiiUnit="MM" shapeSizeX="0" shapeBorderColor="128,128,128,255" shapeBorderWidthUnit="MM" shapeOpacity="1" shapeOffsetY="0" shapeOffsetMapUnitScale="3x:0,0,0,0,0,0" shapeRadiiMapUnitScale="3x:0,0,0,0,0,0" shapeRotation="0" shapeSizeType="0" shapeRadiiX="0" shapeBorderWidth="0" shapeRotationType="0" shapeFillColor="255,255,255,255" shapeOffsetX="0" shapeOffsetUnit="MM" shapeSizeMapUnitScale="3x:0,0,0,0,0,0" shapeSizeUnit="MM" shapeSVGFile="" shapeSizeY="0" shapeJoinStyle="64" shapeDraw="0" shapeRadiiY="0" shapeType="0" shapeBorderWidthMapUnitScale="3x:0,0,0,0,0,0" shapeBlendMode="0">
+              <symbol type="fill" alpha="1" name="fillSymbol" force_rhr="0" clip_to_extent="1">
                 <data_defined_properties>
                   <Option type="Map">
-                    <Option type="QString" name="name" value=""/>
+                    <Option value="" type="QString" name="name"/>
                     <Option name="properties"/>
-                    <Option type="QString" name="type" value="collection"/>
+                    <Option value="collection" type="QString" name="type"/>
                   </Option>
                 </data_defined_properties>
-                <layer enabled="1" class="SimpleFill" locked="0" pass="0">
+                <layer enabled="1" class="SimpleFill" pass="0" locked="0">
                   <Option type="Map">
-                    <Option type="QString" name="border_width_map_unit_scale" value="3x:0,0,0,0,0,0"/>
-                    <Option type="QString" name="color" value="255,255,255,255"/>
-                    <Option type="QString" name="joinstyle" value="bevel"/>
-                    <Option type="QString" name="offset" value="0,0"/>
-                    <Option type="QString" name="offset_map_unit_scale" value="3x:0,0,0,0,0,0"/>
-                    <Option type="QString" name="offset_unit" value="MM"/>
-                    <Option type="QString" name="outline_color" value="128,128,128,255"/>
-                    <Option type="QString" name="outline_style" value="no"/>
-                    <Option type="QString" name="outline_width" value="0"/>
-                    <Option type="QString" name="outline_width_unit" value="MM"/>
-                    <Option type="QString" name="style" value="solid"/>
+                    <Option value="3x:0,0,0,0,0,0" type="QString" name="border_width_map_unit_scale"/>
+                    <Option value="255,255,255,255" type="QString" name="color"/>
+                    <Option value="bevel" type="QString" name="joinstyle"/>
+                    <Option value="0,0" type="QString" name="offset"/>
+                    <Option value="3x:0,0,0,0,0,0" type="QString" name="offset_map_unit_scale"/>
+                    <Option value="MM" type="QString" name="offset_unit"/>
+                    <Option value="128,128,128,255" type="QString" name="outline_color"/>
+                    <Option value="no" type="QString" name="outline_style"/>
+                    <Option value="0" type="QString" name="outline_width"/>
+                    <Option value="MM" type="QString" name="outline_width_unit"/>
+                    <Option value="solid" type="QString" name="style"/>
                   </Option>
-                  <prop v="3x:0,0,0,0,0,0" k="border_width_map_unit_scale"/>
-                  <prop v="255,255,255,255" k="color"/>
-                  <prop v="bevel" k="joinstyle"/>
-                  <prop v="0,0" k="offset"/>
-                  <prop v="3x:0,0,0,0,0,0" k="offset_map_unit_scale"/>
-                  <prop v="MM" k="offset_unit"/>
-                  <prop v="128,128,128,255" k="outline_color"/>
-                  <prop v="no" k="outline_style"/>
-                  <prop v="0" k="outline_width"/>
-                  <prop v="MM" k="outline_width_unit"/>
-                  <prop v="solid" k="style"/>
+                  <prop k="border_width_map_unit_scale" v="3x:0,0,0,0,0,0"/>
+                  <prop k="color" v="255,255,255,255"/>
+                  <prop k="joinstyle" v="bevel"/>
+                  <prop k="offset" v="0,0"/>
+                  <prop k="offset_map_unit_scale" v="3x:0,0,0,0,0,0"/>
+                  <prop k="offset_unit" v="MM"/>
+                  <prop k="outline_color" v="128,128,128,255"/>
+                  <prop k="outline_style" v="no"/>
+                  <prop k="outline_width" v="0"/>
+                  <prop k="outline_width_unit" v="MM"/>
+                  <prop k="style" v="solid"/>
                   <data_defined_properties>
                     <Option type="Map">
-                      <Option type="QString" name="name" value=""/>
+                      <Option value="" type="QString" name="name"/>
                       <Option name="properties"/>
-                      <Option type="QString" name="type" value="collection"/>
+                      <Option value="collection" type="QString" name="type"/>
                     </Option>
                   </data_defined_properties>
                 </layer>
               </symbol>
             </background>
-            <shadow shadowOffsetMapUnitScale="3x:0,0,0,0,0,0" shadowRadius="1.5" shadowDraw="0" shadowOffsetDist="1" shadowRadiusAlphaOnly="0" shadowOffsetAngle="135" shadowOffsetUnit="MM" shadowColor="0,0,0,255" shadowUnder="0" shadowOpacity="0.69999999999999996" shadowScale="100" shadowRadiusMapUnitScale="3x:0,0,0,0,0,0" shadowRadiusUnit="MM" shadowOffsetGlobal="1" shadowBlendMode="6"/>
+            <shadow shadowOffsetDist="1" shadowDraw="0" shadowColor="0,0,0,255" shadowUnder="0" shadowBlendMode="6" shadowScale="100" shadowOffsetGlobal="1" shadowRadiusMapUnitScale="3x:0,0,0,0,0,0" shadowOffsetMapUnitScale="3x:0,0,0,0,0,0" shadowRadius="1.5" shadowRadiusAlphaOnly="0" shadowRadiusUnit="MM" shadowOffsetAngle="135" shadowOffsetUnit="MM" shadowOpacity="0.69999999999999996"/>
             <dd_properties>
               <Option type="Map">
-                <Option type="QString" name="name" value=""/>
+                <Option value="" type="QString" name="name"/>
                 <Option name="properties"/>
-                <Option type="QString" name="type" value="collection"/>
+                <Option value="collection" type="QString" name="type"/>
               </Option>
             </dd_properties>
             <substitutions/>
           </text-style>
-          <text-format autoWrapLength="0" formatNumbers="0" decimals="3" addDirectionSymbol="0" placeDirectionSymbol="0" rightDirectionSymbol=">" reverseDirectionSymbol="0" leftDirectionSymbol="&lt;" wrapChar="" multilineAlign="3" useMaxLineLengthForAutoWrap="1" plussign="0"/>
-          <placement rotationAngle="0" overrunDistance="0" fitInPolygonOnly="0" placement="6" predefinedPositionOrder="TR,TL,BR,BL,R,L,TSR,BSR" maxCurvedCharAngleOut="-25" geometryGeneratorEnabled="0" dist="1" repeatDistanceUnits="MM" yOffset="0" geometryGenerator="" polygonPlacementFlags="2" distMapUnitScale="3x:0,0,0,0,0,0" lineAnchorType="0" offsetType="0" distUnits="MM" rotationUnit="AngleDegrees" repeatDistanceMapUnitScale="3x:0,0,0,0,0,0" priority="9" centroidInside="0" repeatDistance="0" geometryGeneratorType="PointGeometry" offsetUnits="MM" maxCurvedCharAngleIn="25" quadOffset="4" centroidWhole="0" xOffset="0" overrunDistanceUnit="MM" lineAnchorPercent="0.5" lineAnchorClipping="0" preserveRotation="1" labelOffsetMapUnitScale="3x:0,0,0,0,0,0" overrunDistanceMapUnitScale="3x:0,0,0,0,0,0" placementFlags="10" layerType="UnknownGeometry"/>
-          <rendering minFeatureSize="0" fontMaxPixelSize="10000" scaleMin="0" obstacle="1" limitNumLabels="0" fontLimitPixelSize="0" drawLabels="1" labelPerPart="0" maxNumLabels="2000" zIndex="0" unplacedVisibility="0" obstacleFactor="1" displayAll="0" mergeLines="0" fontMinPixelSize="0" scaleMax="0" upsidedownLabels="0" scaleVisibility="0" obstacleType="1"/>
+          <text-format multilineAlign="3" leftDirectionSymbol="&lt;" decimals="3" addDirectionSymbol="0" reverseDirectionSymbol="0" autoWrapLength="0" useMaxLineLengthForAutoWrap="1" plussign="0" rightDirectionSymbol=">" placeDirectionSymbol="0" wrapChar="" formatNumbers="0"/>
+          <placement polygonPlacementFlags="2" lineAnchorPercent="0.5" centroidInside="0" placement="6" offsetUnits="MM" distMapUnitScale="3x:0,0,0,0,0,0" lineAnchorClipping="0" geometryGenerator="" layerType="UnknownGeometry" geometryGeneratorType="PointGeometry" priority="9" yOffset="0" fitInPolygonOnly="0" rotationUnit="AngleDegrees" geometryGeneratorEnabled="0" xOffset="0" dist="1" distUnits="MM" offsetType="0" predefinedPositionOrder="TR,TL,BR,BL,R,L,TSR,BSR" overrunDistanceMapUnitScale="3x:0,0,0,0,0,0" rotationAngle="0" overrunDistanceUnit="MM" maxCurvedCharAngleOut="-25" labelOffsetMapUnitScale="3x:0,0,0,0,0,0" maxCurvedCharAngleIn="25" repeatDistance="0" centroidWhole="0" quadOffset="4" repeatDistanceUnits="MM" repeatDistanceMapUnitScale="3x:0,0,0,0,0,0" overrunDistance="0" placementFlags="10" preserveRotation="1" lineAnchorType="0"/>
+          <rendering upsidedownLabels="0" maxNumLabels="2000" scaleVisibility="0" zIndex="0" labelPerPart="0" displayAll="0" limitNumLabels="0" obstacleType="1" minFeatureSize="0" obstacle="1" unplacedVisibility="0" fontMinPixelSize="0" scaleMin="0" scaleMax="0" drawLabels="1" obstacleFactor="1" fontMaxPixelSize="10000" mergeLines="0" fontLimitPixelSize="0"/>
           <dd_properties>
             <Option type="Map">
-              <Option type="QString" name="name" value=""/>
+              <Option value="" type="QString" name="name"/>
               <Option name="properties"/>
-              <Option type="QString" name="type" value="collection"/>
+              <Option value="collection" type="QString" name="type"/>
             </Option>
           </dd_properties>
           <callout type="simple">
             <Option type="Map">
-              <Option type="QString" name="anchorPoint" value="pole_of_inaccessibility"/>
-              <Option type="int" name="blendMode" value="0"/>
+              <Option value="pole_of_inaccessibility" type="QString" name="anchorPoint"/>
+              <Option value="0" type="int" name="blendMode"/>
               <Option type="Map" name="ddProperties">
-                <Option type="QString" name="name" value=""/>
+                <Option value="" type="QString" name="name"/>
                 <Option name="properties"/>
-                <Option type="QString" name="type" value="collection"/>
+                <Option value="collection" type="QString" name="type"/>
               </Option>
-              <Option type="bool" name="drawToAllParts" value="false"/>
-              <Option type="QString" name="enabled" value="0"/>
-              <Option type="QString" name="labelAnchorPoint" value="point_on_exterior"/>
-              <Option type="QString" name="lineSymbol" value="&lt;symbol type=&quot;line&quot; force_rhr=&quot;0&quot; clip_to_extent=&quot;1&quot; name=&quot;symbol&quot; alpha=&quot;1&quot;>&lt;data_defined_properties>&lt;Option type=&quot;Map&quot;>&lt;Option type=&quot;QString&quot; name=&quot;name&quot; value=&quot;&quot;/>&lt;Option name=&quot;properties&quot;/>&lt;Option type=&quot;QString&quot; name=&quot;type&quot; value=&quot;collection&quot;/>&lt;/Option>&lt;/data_defined_properties>&lt;layer enabled=&quot;1&quot; class=&quot;SimpleLine&quot; locked=&quot;0&quot; pass=&quot;0&quot;>&lt;Option type=&quot;Map&quot;>&lt;Option type=&quot;QString&quot; name=&quot;align_dash_pattern&quot; value=&quot;0&quot;/>&lt;Option type=&quot;QString&quot; name=&quot;capstyle&quot; value=&quot;square&quot;/>&lt;Option type=&quot;QString&quot; name=&quot;customdash&quot; value=&quot;5;2&quot;/>&lt;Option type=&quot;QString&quot; name=&quot;customdash_map_unit_scale&quot; value=&quot;3x:0,0,0,0,0,0&quot;/>&lt;Option type=&quot;QString&quot; name=&quot;customdash_unit&quot; value=&quot;MM&quot;/>&lt;Option type=&quot;QString&quot; name=&quot;dash_pattern_offset&quot; value=&quot;0&quot;/>&lt;Option type=&quot;QString&quot; name=&quot;dash_pattern_offset_map_unit_scale&quot; value=&quot;3x:0,0,0,0,0,0&quot;/>&lt;Option type=&quot;QString&quot; name=&quot;dash_pattern_offset_unit&quot; value=&quot;MM&quot;/>&lt;Option type=&quot;QString&quot; name=&quot;draw_inside_polygon&quot; value=&quot;0&quot;/>&lt;Option type=&quot;QString&quot; name=&quot;joinstyle&quot; value=&quot;bevel&quot;/>&lt;Option type=&quot;QString&quot; name=&quot;line_color&quot; value=&quot;60,60,60,255&quot;/>&lt;Option type=&quot;QString&quot; name=&quot;line_style&quot; value=&quot;solid&quot;/>&lt;Option type=&quot;QString&quot; name=&quot;line_width&quot; value=&quot;0.3&quot;/>&lt;Option type=&quot;QString&quot; name=&quot;line_width_unit&quot; value=&quot;MM&quot;/>&lt;Option type=&quot;QString&quot; name=&quot;offset&quot; value=&quot;0&quot;/>&lt;Option type=&quot;QString&quot; name=&quot;offset_map_unit_scale&quot; value=&quot;3x:0,0,0,0,0,0&quot;/>&lt;Option type=&quot;QString&quot; name=&quot;offset_unit&quot; value=&quot;MM&quot;/>&lt;Option type=&quot;QString&quot; name=&quot;ring_filter&quot; value=&quot;0&quot;/>&lt;Option type=&quot;QString&quot; name=&quot;trim_distance_end&quot; value=&quot;0&quot;/>&lt;Option type=&quot;QString&quot; name=&quot;trim_distance_end_map_unit_scale&quot; value=&quot;3x:0,0,0,0,0,0&quot;/>&lt;Option type=&quot;QString&quot; name=&quot;trim_distance_end_unit&quot; value=&quot;MM&quot;/>&lt;Option type=&quot;QString&quot; name=&quot;trim_distance_start&quot; value=&quot;0&quot;/>&lt;Option type=&quot;QString&quot; name=&quot;trim_distance_start_map_unit_scale&quot; value=&quot;3x:0,0,0,0,0,0&quot;/>&lt;Option type=&quot;QString&quot; name=&quot;trim_distance_start_unit&quot; value=&quot;MM&quot;/>&lt;Option type=&quot;QString&quot; name=&quot;tweak_dash_pattern_on_corners&quot; value=&quot;0&quot;/>&lt;Option type=&quot;QString&quot; name=&quot;use_custom_dash&quot; value=&quot;0&quot;/>&lt;Option type=&quot;QString&quot; name=&quot;width_map_unit_scale&quot; value=&quot;3x:0,0,0,0,0,0&quot;/>&lt;/Option>&lt;prop v=&quot;0&quot; k=&quot;align_dash_pattern&quot;/>&lt;prop v=&quot;square&quot; k=&quot;capstyle&quot;/>&lt;prop v=&quot;5;2&quot; k=&quot;customdash&quot;/>&lt;prop v=&quot;3x:0,0,0,0,0,0&quot; k=&quot;customdash_map_unit_scale&quot;/>&lt;prop v=&quot;MM&quot; k=&quot;customdash_unit&quot;/>&lt;prop v=&quot;0&quot; k=&quot;dash_pattern_offset&quot;/>&lt;prop v=&quot;3x:0,0,0,0,0,0&quot; k=&quot;dash_pattern_offset_map_unit_scale&quot;/>&lt;prop v=&quot;MM&quot; k=&quot;dash_pattern_offset_unit&quot;/>&lt;prop v=&quot;0&quot; k=&quot;draw_inside_polygon&quot;/>&lt;prop v=&quot;bevel&quot; k=&quot;joinstyle&quot;/>&lt;prop v=&quot;60,60,60,255&quot; k=&quot;line_color&quot;/>&lt;prop v=&quot;solid&quot; k=&quot;line_style&quot;/>&lt;prop v=&quot;0.3&quot; k=&quot;line_width&quot;/>&lt;prop v=&quot;MM&quot; k=&quot;line_width_unit&quot;/>&lt;prop v=&quot;0&quot; k=&quot;offset&quot;/>&lt;prop v=&quot;3x:0,0,0,0,0,0&quot; k=&quot;offset_map_unit_scale&quot;/>&lt;prop v=&quot;MM&quot; k=&quot;offset_unit&quot;/>&lt;prop v=&quot;0&quot; k=&quot;ring_filter&quot;/>&lt;prop v=&quot;0&quot; k=&quot;trim_distance_end&quot;/>&lt;prop v=&quot;3x:0,0,0,0,0,0&quot; k=&quot;trim_distance_end_map_unit_scale&quot;/>&lt;prop v=&quot;MM&quot; k=&quot;trim_distance_end_unit&quot;/>&lt;prop v=&quot;0&quot; k=&quot;trim_distance_start&quot;/>&lt;prop v=&quot;3x:0,0,0,0,0,0&quot; k=&quot;trim_distance_start_map_unit_scale&quot;/>&lt;prop v=&quot;MM&quot; k=&quot;trim_distance_start_unit&quot;/>&lt;prop v=&quot;0&quot; k=&quot;tweak_dash_pattern_on_corners&quot;/>&lt;prop v=&quot;0&quot; k=&quot;use_custom_dash&quot;/>&lt;prop v=&quot;3x:0,0,0,0,0,0&quot; k=&quot;width_map_unit_scale&quot;/>&lt;data_defined_properties>&lt;Option type=&quot;Map&quot;>&lt;Option type=&quot;QString&quot; name=&quot;name&quot; value=&quot;&quot;/>&lt;Option name=&quot;properties&quot;/>&lt;Option type=&quot;QString&quot; name=&quot;type&quot; value=&quot;collection&quot;/>&lt;/Option>&lt;/data_defined_properties>&lt;/layer>&lt;/symbol>"/>
-              <Option type="double" name="minLength" value="0"/>
-              <Option type="QString" name="minLengthMapUnitScale" value="3x:0,0,0,0,0,0"/>
-              <Option type="QString" name="minLengthUnit" value="MM"/>
-              <Option type="double" name="offsetFromAnchor" value="0"/>
-              <Option type="QString" name="offsetFromAnchorMapUnitScale" value="3x:0,0,0,0,0,0"/>
-              <Option type="QString" name="offsetFromAnchorUnit" value="MM"/>
-              <Option type="double" name="offsetFromLabel" value="0"/>
-              <Option type="QString" name="offsetFromLabelMapUnitScale" value="3x:0,0,0,0,0,0"/>
-              <Option type="QString" name="offsetFromLabelUnit" value="MM"/>
+              <Option value="false" type="bool" name="drawToAllParts"/>
+              <Option value="0" type="QString" name="enabled"/>
+              <Option value="point_on_exterior" type="QString" name="labelAnchorPoint"/>
+              <Option value="&lt;symbol type=&quot;line&quot; alpha=&quot;1&quot; name=&quot;symbol&quot; force_rhr=&quot;0&quot; clip_to_extent=&quot;1&quot;>&lt;data_defined_properties>&lt;Option type=&quot;Map&quot;>&lt;Option value=&quot;&quot; type=&quot;QString&quot; name=&quot;name&quot;/>&lt;Option name=&quot;properties&quot;/>&lt;Option value=&quot;collection&quot; type=&quot;QString&quot; name=&quot;type&quot;/>&lt;/Option>&lt;/data_defined_properties>&lt;layer enabled=&quot;1&quot; class=&quot;SimpleLine&quot; pass=&quot;0&quot; locked=&quot;0&quot;>&lt;Option type=&quot;Map&quot;>&lt;Option value=&quot;0&quot; type=&quot;QString&quot; name=&quot;align_dash_pattern&quot;/>&lt;Option value=&quot;square&quot; type=&quot;QString&quot; name=&quot;capstyle&quot;/>&lt;Option value=&quot;5;2&quot; type=&quot;QString&quot; name=&quot;customdash&quot;/>&lt;Option value=&quot;3x:0,0,0,0,0,0&quot; type=&quot;QString&quot; name=&quot;customdash_map_unit_scale&quot;/>&lt;Option value=&quot;MM&quot; type=&quot;QString&quot; name=&quot;customdash_unit&quot;/>&lt;Option value=&quot;0&quot; type=&quot;QString&quot; name=&quot;dash_pattern_offset&quot;/>&lt;Option value=&quot;3x:0,0,0,0,0,0&quot; type=&quot;QString&quot; name=&quot;dash_pattern_offset_map_unit_scale&quot;/>&lt;Option value=&quot;MM&quot; type=&quot;QString&quot; name=&quot;dash_pattern_offset_unit&quot;/>&lt;Option value=&quot;0&quot; type=&quot;QString&quot; name=&quot;draw_inside_polygon&quot;/>&lt;Option value=&quot;bevel&quot; type=&quot;QString&quot; name=&quot;joinstyle&quot;/>&lt;Option value=&quot;60,60,60,255&quot; type=&quot;QString&quot; name=&quot;line_color&quot;/>&lt;Option value=&quot;solid&quot; type=&quot;QString&quot; name=&quot;line_style&quot;/>&lt;Option value=&quot;0.3&quot; type=&quot;QString&quot; name=&quot;line_width&quot;/>&lt;Option value=&quot;MM&quot; type=&quot;QString&quot; name=&quot;line_width_unit&quot;/>&lt;Option value=&quot;0&quot; type=&quot;QString&quot; name=&quot;offset&quot;/>&lt;Option value=&quot;3x:0,0,0,0,0,0&quot; type=&quot;QString&quot; name=&quot;offset_map_unit_scale&quot;/>&lt;Option value=&quot;MM&quot; type=&quot;QString&quot; name=&quot;offset_unit&quot;/>&lt;Option value=&quot;0&quot; type=&quot;QString&quot; name=&quot;ring_filter&quot;/>&lt;Option value=&quot;0&quot; type=&quot;QString&quot; name=&quot;trim_distance_end&quot;/>&lt;Option value=&quot;3x:0,0,0,0,0,0&quot; type=&quot;QString&quot; name=&quot;trim_distance_end_map_unit_scale&quot;/>&lt;Option value=&quot;MM&quot; type=&quot;QString&quot; name=&quot;trim_distance_end_unit&quot;/>&lt;Option value=&quot;0&quot; type=&quot;QString&quot; name=&quot;trim_distance_start&quot;/>&lt;Option value=&quot;3x:0,0,0,0,0,0&quot; type=&quot;QString&quot; name=&quot;trim_distance_start_map_unit_scale&quot;/>&lt;Option value=&quot;MM&quot; type=&quot;QString&quot; name=&quot;trim_distance_start_unit&quot;/>&lt;Option value=&quot;0&quot; type=&quot;QString&quot; name=&quot;tweak_dash_pattern_on_corners&quot;/>&lt;Option value=&quot;0&quot; type=&quot;QString&quot; name=&quot;use_custom_dash&quot;/>&lt;Option value=&quot;3x:0,0,0,0,0,0&quot; type=&quot;QString&quot; name=&quot;width_map_unit_scale&quot;/>&lt;/Option>&lt;prop k=&quot;align_dash_pattern&quot; v=&quot;0&quot;/>&lt;prop k=&quot;capstyle&quot; v=&quot;square&quot;/>&lt;prop k=&quot;customdash&quot; v=&quot;5;2&quot;/>&lt;prop k=&quot;customdash_map_unit_scale&quot; v=&quot;3x:0,0,0,0,0,0&quot;/>&lt;prop k=&quot;customdash_unit&quot; v=&quot;MM&quot;/>&lt;prop k=&quot;dash_pattern_offset&quot; v=&quot;0&quot;/>&lt;prop k=&quot;dash_pattern_offset_map_unit_scale&quot; v=&quot;3x:0,0,0,0,0,0&quot;/>&lt;prop k=&quot;dash_pattern_offset_unit&quot; v=&quot;MM&quot;/>&lt;prop k=&quot;draw_inside_polygon&quot; v=&quot;0&quot;/>&lt;prop k=&quot;joinstyle&quot; v=&quot;bevel&quot;/>&lt;prop k=&quot;line_color&quot; v=&quot;60,60,60,255&quot;/>&lt;prop k=&quot;line_style&quot; v=&quot;solid&quot;/>&lt;prop k=&quot;line_width&quot; v=&quot;0.3&quot;/>&lt;prop k=&quot;line_width_unit&quot; v=&quot;MM&quot;/>&lt;prop k=&quot;offset&quot; v=&quot;0&quot;/>&lt;prop k=&quot;offset_map_unit_scale&quot; v=&quot;3x:0,0,0,0,0,0&quot;/>&lt;prop k=&quot;offset_unit&quot; v=&quot;MM&quot;/>&lt;prop k=&quot;ring_filter&quot; v=&quot;0&quot;/>&lt;prop k=&quot;trim_distance_end&quot; v=&quot;0&quot;/>&lt;prop k=&quot;trim_distance_end_map_unit_scale&quot; v=&quot;3x:0,0,0,0,0,0&quot;/>&lt;prop k=&quot;trim_distance_end_unit&quot; v=&quot;MM&quot;/>&lt;prop k=&quot;trim_distance_start&quot; v=&quot;0&quot;/>&lt;prop k=&quot;trim_distance_start_map_unit_scale&quot; v=&quot;3x:0,0,0,0,0,0&quot;/>&lt;prop k=&quot;trim_distance_start_unit&quot; v=&quot;MM&quot;/>&lt;prop k=&quot;tweak_dash_pattern_on_corners&quot; v=&quot;0&quot;/>&lt;prop k=&quot;use_custom_dash&quot; v=&quot;0&quot;/>&lt;prop k=&quot;width_map_unit_scale&quot; v=&quot;3x:0,0,0,0,0,0&quot;/>&lt;data_defined_properties>&lt;Option type=&quot;Map&quot;>&lt;Option value=&quot;&quot; type=&quot;QString&quot; name=&quot;name&quot;/>&lt;Option name=&quot;properties&quot;/>&lt;Option value=&quot;collection&quot; type=&quot;QString&quot; name=&quot;type&quot;/>&lt;/Option>&lt;/data_defined_properties>&lt;/layer>&lt;/symbol>" type="QString" name="lineSymbol"/>
+              <Option value="0" type="double" name="minLength"/>
+              <Option value="3x:0,0,0,0,0,0" type="QString" name="minLengthMapUnitScale"/>
+              <Option value="MM" type="QString" name="minLengthUnit"/>
+              <Option value="0" type="double" name="offsetFromAnchor"/>
+              <Option value="3x:0,0,0,0,0,0" type="QString" name="offsetFromAnchorMapUnitScale"/>
+              <Option value="MM" type="QString" name="offsetFromAnchorUnit"/>
+              <Option value="0" type="double" name="offsetFromLabel"/>
+              <Option value="3x:0,0,0,0,0,0" type="QString" name="offsetFromLabelMapUnitScale"/>
+              <Option value="MM" type="QString" name="offsetFromLabelUnit"/>
             </Option>
           </callout>
         </settings>
@@ -408,379 +408,379 @@
   <featureBlendMode>0</featureBlendMode>
   <layerOpacity>1</layerOpacity>
   <fieldConfiguration>
-    <field configurationFlags="None" name="anomaly_id">
+    <field name="anomaly_id" configurationFlags="None">
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option type="bool" name="IsMultiline" value="false"/>
-            <Option type="bool" name="UseHtml" value="false"/>
+            <Option value="false" type="bool" name="IsMultiline"/>
+            <Option value="false" type="bool" name="UseHtml"/>
           </Option>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="x">
+    <field name="x" configurationFlags="None">
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option type="bool" name="AllowNull" value="true"/>
-            <Option type="double" name="Max" value="1e+09"/>
-            <Option type="double" name="Min" value="-1e+09"/>
-            <Option type="int" name="Precision" value="2"/>
-            <Option type="int" name="Step" value="1"/>
-            <Option type="QString" name="Style" value="SpinBox"/>
+            <Option value="true" type="bool" name="AllowNull"/>
+            <Option value="1e+09" type="double" name="Max"/>
+            <Option value="-1e+09" type="double" name="Min"/>
+            <Option value="2" type="int" name="Precision"/>
+            <Option value="1" type="int" name="Step"/>
+            <Option value="SpinBox" type="QString" name="Style"/>
           </Option>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="y">
+    <field name="y" configurationFlags="None">
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option type="bool" name="AllowNull" value="true"/>
-            <Option type="double" name="Max" value="1e+09"/>
-            <Option type="double" name="Min" value="-1e+09"/>
-            <Option type="int" name="Precision" value="2"/>
-            <Option type="int" name="Step" value="1"/>
-            <Option type="QString" name="Style" value="SpinBox"/>
+            <Option value="true" type="bool" name="AllowNull"/>
+            <Option value="1e+09" type="double" name="Max"/>
+            <Option value="-1e+09" type="double" name="Min"/>
+            <Option value="2" type="int" name="Precision"/>
+            <Option value="1" type="int" name="Step"/>
+            <Option value="SpinBox" type="QString" name="Style"/>
           </Option>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="lat">
+    <field name="lat" configurationFlags="None">
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option type="bool" name="AllowNull" value="true"/>
-            <Option type="double" name="Max" value="1e+09"/>
-            <Option type="double" name="Min" value="-1e+09"/>
-            <Option type="int" name="Precision" value="7"/>
-            <Option type="int" name="Step" value="1"/>
-            <Option type="QString" name="Style" value="SpinBox"/>
+            <Option value="true" type="bool" name="AllowNull"/>
+            <Option value="1e+09" type="double" name="Max"/>
+            <Option value="-1e+09" type="double" name="Min"/>
+            <Option value="7" type="int" name="Precision"/>
+            <Option value="1" type="int" name="Step"/>
+            <Option value="SpinBox" type="QString" name="Style"/>
           </Option>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="lon">
+    <field name="lon" configurationFlags="None">
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option type="bool" name="AllowNull" value="true"/>
-            <Option type="double" name="Max" value="1e+09"/>
-            <Option type="double" name="Min" value="-1e+09"/>
-            <Option type="int" name="Precision" value="7"/>
-            <Option type="int" name="Step" value="1"/>
-            <Option type="QString" name="Style" value="SpinBox"/>
+            <Option value="true" type="bool" name="AllowNull"/>
+            <Option value="1e+09" type="double" name="Max"/>
+            <Option value="-1e+09" type="double" name="Min"/>
+            <Option value="7" type="int" name="Precision"/>
+            <Option value="1" type="int" name="Step"/>
+            <Option value="SpinBox" type="QString" name="Style"/>
           </Option>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="area_m2">
+    <field name="area_m2" configurationFlags="None">
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option type="bool" name="AllowNull" value="true"/>
-            <Option type="double" name="Max" value="1e+09"/>
-            <Option type="double" name="Min" value="-1e+09"/>
-            <Option type="int" name="Precision" value="3"/>
-            <Option type="int" name="Step" value="1"/>
-            <Option type="QString" name="Style" value="SpinBox"/>
+            <Option value="true" type="bool" name="AllowNull"/>
+            <Option value="1e+09" type="double" name="Max"/>
+            <Option value="-1e+09" type="double" name="Min"/>
+            <Option value="3" type="int" name="Precision"/>
+            <Option value="1" type="int" name="Step"/>
+            <Option value="SpinBox" type="QString" name="Style"/>
           </Option>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="diameter_m">
+    <field name="diameter_m" configurationFlags="None">
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option type="bool" name="AllowNull" value="true"/>
-            <Option type="double" name="Max" value="1e+09"/>
-            <Option type="double" name="Min" value="-1e+09"/>
-            <Option type="int" name="Precision" value="2"/>
-            <Option type="int" name="Step" value="1"/>
-            <Option type="QString" name="Style" value="SpinBox"/>
+            <Option value="true" type="bool" name="AllowNull"/>
+            <Option value="1e+09" type="double" name="Max"/>
+            <Option value="-1e+09" type="double" name="Min"/>
+            <Option value="2" type="int" name="Precision"/>
+            <Option value="1" type="int" name="Step"/>
+            <Option value="SpinBox" type="QString" name="Style"/>
           </Option>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="circularity">
+    <field name="circularity" configurationFlags="None">
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option type="bool" name="AllowNull" value="true"/>
-            <Option type="double" name="Max" value="1e+09"/>
-            <Option type="double" name="Min" value="-1e+09"/>
-            <Option type="int" name="Precision" value="2"/>
-            <Option type="int" name="Step" value="1"/>
-            <Option type="QString" name="Style" value="SpinBox"/>
+            <Option value="true" type="bool" name="AllowNull"/>
+            <Option value="1e+09" type="double" name="Max"/>
+            <Option value="-1e+09" type="double" name="Min"/>
+            <Option value="2" type="int" name="Precision"/>
+            <Option value="1" type="int" name="Step"/>
+            <Option value="SpinBox" type="QString" name="Style"/>
           </Option>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="depth_m">
+    <field name="depth_m" configurationFlags="None">
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option type="bool" name="AllowNull" value="true"/>
-            <Option type="double" name="Max" value="1e+09"/>
-            <Option type="double" name="Min" value="-1e+09"/>
-            <Option type="int" name="Precision" value="3"/>
-            <Option type="int" name="Step" value="1"/>
-            <Option type="QString" name="Style" value="SpinBox"/>
+            <Option value="true" type="bool" name="AllowNull"/>
+            <Option value="1e+09" type="double" name="Max"/>
+            <Option value="-1e+09" type="double" name="Min"/>
+            <Option value="3" type="int" name="Precision"/>
+            <Option value="1" type="int" name="Step"/>
+            <Option value="SpinBox" type="QString" name="Style"/>
           </Option>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="depth_sigma_m">
+    <field name="depth_sigma_m" configurationFlags="None">
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option type="bool" name="AllowNull" value="true"/>
-            <Option type="double" name="Max" value="1e+09"/>
-            <Option type="double" name="Min" value="-1e+09"/>
-            <Option type="int" name="Precision" value="3"/>
-            <Option type="int" name="Step" value="1"/>
-            <Option type="QString" name="Style" value="SpinBox"/>
+            <Option value="true" type="bool" name="AllowNull"/>
+            <Option value="1e+09" type="double" name="Max"/>
+            <Option value="-1e+09" type="double" name="Min"/>
+            <Option value="3" type="int" name="Precision"/>
+            <Option value="1" type="int" name="Step"/>
+            <Option value="SpinBox" type="QString" name="Style"/>
           </Option>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="diffusivity_m2s">
+    <field name="diffusivity_m2s" configurationFlags="None">
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option type="bool" name="IsMultiline" value="false"/>
-            <Option type="bool" name="UseHtml" value="false"/>
+            <Option value="false" type="bool" name="IsMultiline"/>
+            <Option value="false" type="bool" name="UseHtml"/>
           </Option>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="diffusivity_sigma_m2s">
+    <field name="diffusivity_sigma_m2s" configurationFlags="None">
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option type="bool" name="IsMultiline" value="false"/>
-            <Option type="bool" name="UseHtml" value="false"/>
+            <Option value="false" type="bool" name="IsMultiline"/>
+            <Option value="false" type="bool" name="UseHtml"/>
           </Option>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="status">
+    <field name="status" configurationFlags="None">
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option type="bool" name="IsMultiline" value="false"/>
-            <Option type="bool" name="UseHtml" value="false"/>
+            <Option value="false" type="bool" name="IsMultiline"/>
+            <Option value="false" type="bool" name="UseHtml"/>
           </Option>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="polarity">
+    <field name="polarity" configurationFlags="None">
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option type="bool" name="IsMultiline" value="false"/>
-            <Option type="bool" name="UseHtml" value="false"/>
+            <Option value="false" type="bool" name="IsMultiline"/>
+            <Option value="false" type="bool" name="UseHtml"/>
           </Option>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="class_cue">
+    <field name="class_cue" configurationFlags="None">
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option type="bool" name="IsMultiline" value="false"/>
-            <Option type="bool" name="UseHtml" value="false"/>
+            <Option value="false" type="bool" name="IsMultiline"/>
+            <Option value="false" type="bool" name="UseHtml"/>
           </Option>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="cue_confidence">
+    <field name="cue_confidence" configurationFlags="None">
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option type="bool" name="AllowNull" value="true"/>
-            <Option type="double" name="Max" value="1e+09"/>
-            <Option type="double" name="Min" value="-1e+09"/>
-            <Option type="int" name="Precision" value="2"/>
-            <Option type="int" name="Step" value="1"/>
-            <Option type="QString" name="Style" value="SpinBox"/>
+            <Option value="true" type="bool" name="AllowNull"/>
+            <Option value="1e+09" type="double" name="Max"/>
+            <Option value="-1e+09" type="double" name="Min"/>
+            <Option value="2" type="int" name="Precision"/>
+            <Option value="1" type="int" name="Step"/>
+            <Option value="SpinBox" type="QString" name="Style"/>
           </Option>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="p_mine">
+    <field name="p_mine" configurationFlags="None">
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option type="bool" name="AllowNull" value="true"/>
-            <Option type="double" name="Max" value="1e+09"/>
-            <Option type="double" name="Min" value="-1e+09"/>
-            <Option type="int" name="Precision" value="2"/>
-            <Option type="int" name="Step" value="1"/>
-            <Option type="QString" name="Style" value="SpinBox"/>
+            <Option value="true" type="bool" name="AllowNull"/>
+            <Option value="1e+09" type="double" name="Max"/>
+            <Option value="-1e+09" type="double" name="Min"/>
+            <Option value="2" type="int" name="Precision"/>
+            <Option value="1" type="int" name="Step"/>
+            <Option value="SpinBox" type="QString" name="Style"/>
           </Option>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="priority">
+    <field name="priority" configurationFlags="None">
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option type="bool" name="IsMultiline" value="false"/>
-            <Option type="bool" name="UseHtml" value="false"/>
+            <Option value="false" type="bool" name="IsMultiline"/>
+            <Option value="false" type="bool" name="UseHtml"/>
           </Option>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="set_aside_reason">
+    <field name="set_aside_reason" configurationFlags="None">
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option type="bool" name="IsMultiline" value="false"/>
-            <Option type="bool" name="UseHtml" value="false"/>
+            <Option value="false" type="bool" name="IsMultiline"/>
+            <Option value="false" type="bool" name="UseHtml"/>
           </Option>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="n_scans">
+    <field name="n_scans" configurationFlags="None">
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option type="bool" name="IsMultiline" value="false"/>
-            <Option type="bool" name="UseHtml" value="false"/>
+            <Option value="false" type="bool" name="IsMultiline"/>
+            <Option value="false" type="bool" name="UseHtml"/>
           </Option>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="contrast_day_k">
+    <field name="contrast_day_k" configurationFlags="None">
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option type="bool" name="AllowNull" value="true"/>
-            <Option type="double" name="Max" value="1e+09"/>
-            <Option type="double" name="Min" value="-1e+09"/>
-            <Option type="int" name="Precision" value="2"/>
-            <Option type="int" name="Step" value="1"/>
-            <Option type="QString" name="Style" value="SpinBox"/>
+            <Option value="true" type="bool" name="AllowNull"/>
+            <Option value="1e+09" type="double" name="Max"/>
+            <Option value="-1e+09" type="double" name="Min"/>
+            <Option value="2" type="int" name="Precision"/>
+            <Option value="1" type="int" name="Step"/>
+            <Option value="SpinBox" type="QString" name="Style"/>
           </Option>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="contrast_night_k">
+    <field name="contrast_night_k" configurationFlags="None">
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option type="bool" name="AllowNull" value="true"/>
-            <Option type="double" name="Max" value="1e+09"/>
-            <Option type="double" name="Min" value="-1e+09"/>
-            <Option type="int" name="Precision" value="2"/>
-            <Option type="int" name="Step" value="1"/>
-            <Option type="QString" name="Style" value="SpinBox"/>
+            <Option value="true" type="bool" name="AllowNull"/>
+            <Option value="1e+09" type="double" name="Max"/>
+            <Option value="-1e+09" type="double" name="Min"/>
+            <Option value="2" type="int" name="Precision"/>
+            <Option value="1" type="int" name="Step"/>
+            <Option value="SpinBox" type="QString" name="Style"/>
           </Option>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="mine_curve_r">
+    <field name="mine_curve_r" configurationFlags="None">
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option type="bool" name="AllowNull" value="true"/>
-            <Option type="double" name="Max" value="1e+09"/>
-            <Option type="double" name="Min" value="-1e+09"/>
-            <Option type="int" name="Precision" value="2"/>
-            <Option type="int" name="Step" value="1"/>
-            <Option type="QString" name="Style" value="SpinBox"/>
+            <Option value="true" type="bool" name="AllowNull"/>
+            <Option value="1e+09" type="double" name="Max"/>
+            <Option value="-1e+09" type="double" name="Min"/>
+            <Option value="2" type="int" name="Precision"/>
+            <Option value="1" type="int" name="Step"/>
+            <Option value="SpinBox" type="QString" name="Style"/>
           </Option>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="mine_curve_level">
+    <field name="mine_curve_level" configurationFlags="None">
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option type="bool" name="AllowNull" value="true"/>
-            <Option type="double" name="Max" value="1e+09"/>
-            <Option type="double" name="Min" value="-1e+09"/>
-            <Option type="int" name="Precision" value="2"/>
-            <Option type="int" name="Step" value="1"/>
-            <Option type="QString" name="Style" value="SpinBox"/>
+            <Option value="true" type="bool" name="AllowNull"/>
+            <Option value="1e+09" type="double" name="Max"/>
+            <Option value="-1e+09" type="double" name="Min"/>
+            <Option value="2" type="int" name="Precision"/>
+            <Option value="1" type="int" name="Step"/>
+            <Option value="SpinBox" type="QString" name="Style"/>
           </Option>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="fix_quality">
+    <field name="fix_quality" configurationFlags="None">
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option type="bool" name="IsMultiline" value="false"/>
-            <Option type="bool" name="UseHtml" value="false"/>
+            <Option value="false" type="bool" name="IsMultiline"/>
+            <Option value="false" type="bool" name="UseHtml"/>
           </Option>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="figure">
+    <field name="figure" configurationFlags="None">
       <editWidget type="">
         <config>
           <Option/>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="contrast_series">
+    <field name="contrast_series" configurationFlags="None">
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option type="bool" name="IsMultiline" value="false"/>
-            <Option type="bool" name="UseHtml" value="false"/>
+            <Option value="false" type="bool" name="IsMultiline"/>
+            <Option value="false" type="bool" name="UseHtml"/>
           </Option>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="short_id">
+    <field name="short_id" configurationFlags="None">
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option type="bool" name="IsMultiline" value="false"/>
-            <Option type="bool" name="UseHtml" value="false"/>
+            <Option value="false" type="bool" name="IsMultiline"/>
+            <Option value="false" type="bool" name="UseHtml"/>
           </Option>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="depth">
+    <field name="depth" configurationFlags="None">
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option type="bool" name="IsMultiline" value="false"/>
-            <Option type="bool" name="UseHtml" value="false"/>
+            <Option value="false" type="bool" name="IsMultiline"/>
+            <Option value="false" type="bool" name="UseHtml"/>
           </Option>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="diffusivity">
+    <field name="diffusivity" configurationFlags="None">
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option type="bool" name="IsMultiline" value="false"/>
-            <Option type="bool" name="UseHtml" value="false"/>
+            <Option value="false" type="bool" name="IsMultiline"/>
+            <Option value="false" type="bool" name="UseHtml"/>
           </Option>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="likelihood">
+    <field name="likelihood" configurationFlags="None">
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option type="bool" name="IsMultiline" value="false"/>
-            <Option type="bool" name="UseHtml" value="false"/>
+            <Option value="false" type="bool" name="IsMultiline"/>
+            <Option value="false" type="bool" name="UseHtml"/>
           </Option>
         </config>
       </editWidget>
     </field>
-    <field configurationFlags="None" name="cue_confidence_pct">
+    <field name="cue_confidence_pct" configurationFlags="None">
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option type="bool" name="IsMultiline" value="false"/>
-            <Option type="bool" name="UseHtml" value="false"/>
+            <Option value="false" type="bool" name="IsMultiline"/>
+            <Option value="false" type="bool" name="UseHtml"/>
           </Option>
         </config>
       </editWidget>
@@ -821,149 +821,149 @@
     <alias field="cue_confidence_pct" index="31" name="Class cue confidence"/>
   </aliases>
   <defaults>
-    <default field="anomaly_id" expression="" applyOnUpdate="0"/>
-    <default field="x" expression="" applyOnUpdate="0"/>
-    <default field="y" expression="" applyOnUpdate="0"/>
-    <default field="lat" expression="" applyOnUpdate="0"/>
-    <default field="lon" expression="" applyOnUpdate="0"/>
-    <default field="area_m2" expression="" applyOnUpdate="0"/>
-    <default field="diameter_m" expression="" applyOnUpdate="0"/>
-    <default field="circularity" expression="" applyOnUpdate="0"/>
-    <default field="depth_m" expression="" applyOnUpdate="0"/>
-    <default field="depth_sigma_m" expression="" applyOnUpdate="0"/>
-    <default field="diffusivity_m2s" expression="" applyOnUpdate="0"/>
-    <default field="diffusivity_sigma_m2s" expression="" applyOnUpdate="0"/>
-    <default field="status" expression="" applyOnUpdate="0"/>
-    <default field="polarity" expression="" applyOnUpdate="0"/>
-    <default field="class_cue" expression="" applyOnUpdate="0"/>
-    <default field="cue_confidence" expression="" applyOnUpdate="0"/>
-    <default field="p_mine" expression="" applyOnUpdate="0"/>
-    <default field="priority" expression="" applyOnUpdate="0"/>
-    <default field="set_aside_reason" expression="" applyOnUpdate="0"/>
-    <default field="n_scans" expression="" applyOnUpdate="0"/>
-    <default field="contrast_day_k" expression="" applyOnUpdate="0"/>
-    <default field="contrast_night_k" expression="" applyOnUpdate="0"/>
-    <default field="mine_curve_r" expression="" applyOnUpdate="0"/>
-    <default field="mine_curve_level" expression="" applyOnUpdate="0"/>
-    <default field="fix_quality" expression="" applyOnUpdate="0"/>
-    <default field="figure" expression="" applyOnUpdate="0"/>
-    <default field="contrast_series" expression="" applyOnUpdate="0"/>
-    <default field="short_id" expression="" applyOnUpdate="0"/>
-    <default field="depth" expression="" applyOnUpdate="0"/>
-    <default field="diffusivity" expression="" applyOnUpdate="0"/>
-    <default field="likelihood" expression="" applyOnUpdate="0"/>
-    <default field="cue_confidence_pct" expression="" applyOnUpdate="0"/>
+    <default field="anomaly_id" applyOnUpdate="0" expression=""/>
+    <default field="x" applyOnUpdate="0" expression=""/>
+    <default field="y" applyOnUpdate="0" expression=""/>
+    <default field="lat" applyOnUpdate="0" expression=""/>
+    <default field="lon" applyOnUpdate="0" expression=""/>
+    <default field="area_m2" applyOnUpdate="0" expression=""/>
+    <default field="diameter_m" applyOnUpdate="0" expression=""/>
+    <default field="circularity" applyOnUpdate="0" expression=""/>
+    <default field="depth_m" applyOnUpdate="0" expression=""/>
+    <default field="depth_sigma_m" applyOnUpdate="0" expression=""/>
+    <default field="diffusivity_m2s" applyOnUpdate="0" expression=""/>
+    <default field="diffusivity_sigma_m2s" applyOnUpdate="0" expression=""/>
+    <default field="status" applyOnUpdate="0" expression=""/>
+    <default field="polarity" applyOnUpdate="0" expression=""/>
+    <default field="class_cue" applyOnUpdate="0" expression=""/>
+    <default field="cue_confidence" applyOnUpdate="0" expression=""/>
+    <default field="p_mine" applyOnUpdate="0" expression=""/>
+    <default field="priority" applyOnUpdate="0" expression=""/>
+    <default field="set_aside_reason" applyOnUpdate="0" expression=""/>
+    <default field="n_scans" applyOnUpdate="0" expression=""/>
+    <default field="contrast_day_k" applyOnUpdate="0" expression=""/>
+    <default field="contrast_night_k" applyOnUpdate="0" expression=""/>
+    <default field="mine_curve_r" applyOnUpdate="0" expression=""/>
+    <default field="mine_curve_level" applyOnUpdate="0" expression=""/>
+    <default field="fix_quality" applyOnUpdate="0" expression=""/>
+    <default field="figure" applyOnUpdate="0" expression=""/>
+    <default field="contrast_series" applyOnUpdate="0" expression=""/>
+    <default field="short_id" applyOnUpdate="0" expression=""/>
+    <default field="depth" applyOnUpdate="0" expression=""/>
+    <default field="diffusivity" applyOnUpdate="0" expression=""/>
+    <default field="likelihood" applyOnUpdate="0" expression=""/>
+    <default field="cue_confidence_pct" applyOnUpdate="0" expression=""/>
   </defaults>
   <constraints>
-    <constraint exp_strength="0" field="anomaly_id" notnull_strength="0" constraints="0" unique_strength="0"/>
-    <constraint exp_strength="0" field="x" notnull_strength="0" constraints="0" unique_strength="0"/>
-    <constraint exp_strength="0" field="y" notnull_strength="0" constraints="0" unique_strength="0"/>
-    <constraint exp_strength="0" field="lat" notnull_strength="0" constraints="0" unique_strength="0"/>
-    <constraint exp_strength="0" field="lon" notnull_strength="0" constraints="0" unique_strength="0"/>
-    <constraint exp_strength="0" field="area_m2" notnull_strength="0" constraints="0" unique_strength="0"/>
-    <constraint exp_strength="0" field="diameter_m" notnull_strength="0" constraints="0" unique_strength="0"/>
-    <constraint exp_strength="0" field="circularity" notnull_strength="0" constraints="0" unique_strength="0"/>
-    <constraint exp_strength="0" field="depth_m" notnull_strength="0" constraints="0" unique_strength="0"/>
-    <constraint exp_strength="0" field="depth_sigma_m" notnull_strength="0" constraints="0" unique_strength="0"/>
-    <constraint exp_strength="0" field="diffusivity_m2s" notnull_strength="0" constraints="0" unique_strength="0"/>
-    <constraint exp_strength="0" field="diffusivity_sigma_m2s" notnull_strength="0" constraints="0" unique_strength="0"/>
-    <constraint exp_strength="0" field="status" notnull_strength="0" constraints="0" unique_strength="0"/>
-    <constraint exp_strength="0" field="polarity" notnull_strength="0" constraints="0" unique_strength="0"/>
-    <constraint exp_strength="0" field="class_cue" notnull_strength="0" constraints="0" unique_strength="0"/>
-    <constraint exp_strength="0" field="cue_confidence" notnull_strength="0" constraints="0" unique_strength="0"/>
-    <constraint exp_strength="0" field="p_mine" notnull_strength="0" constraints="0" unique_strength="0"/>
-    <constraint exp_strength="0" field="priority" notnull_strength="0" constraints="0" unique_strength="0"/>
-    <constraint exp_strength="0" field="set_aside_reason" notnull_strength="0" constraints="0" unique_strength="0"/>
-    <constraint exp_strength="0" field="n_scans" notnull_strength="0" constraints="0" unique_strength="0"/>
-    <constraint exp_strength="0" field="contrast_day_k" notnull_strength="0" constraints="0" unique_strength="0"/>
-    <constraint exp_strength="0" field="contrast_night_k" notnull_strength="0" constraints="0" unique_strength="0"/>
-    <constraint exp_strength="0" field="mine_curve_r" notnull_strength="0" constraints="0" unique_strength="0"/>
-    <constraint exp_strength="0" field="mine_curve_level" notnull_strength="0" constraints="0" unique_strength="0"/>
-    <constraint exp_strength="0" field="fix_quality" notnull_strength="0" constraints="0" unique_strength="0"/>
-    <constraint exp_strength="0" field="figure" notnull_strength="0" constraints="0" unique_strength="0"/>
-    <constraint exp_strength="0" field="contrast_series" notnull_strength="0" constraints="0" unique_strength="0"/>
-    <constraint exp_strength="0" field="short_id" notnull_strength="0" constraints="0" unique_strength="0"/>
-    <constraint exp_strength="0" field="depth" notnull_strength="0" constraints="0" unique_strength="0"/>
-    <constraint exp_strength="0" field="diffusivity" notnull_strength="0" constraints="0" unique_strength="0"/>
-    <constraint exp_strength="0" field="likelihood" notnull_strength="0" constraints="0" unique_strength="0"/>
-    <constraint exp_strength="0" field="cue_confidence_pct" notnull_strength="0" constraints="0" unique_strength="0"/>
+    <constraint field="anomaly_id" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint field="x" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint field="y" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint field="lat" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint field="lon" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint field="area_m2" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint field="diameter_m" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint field="circularity" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint field="depth_m" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint field="depth_sigma_m" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint field="diffusivity_m2s" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint field="diffusivity_sigma_m2s" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint field="status" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint field="polarity" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint field="class_cue" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint field="cue_confidence" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint field="p_mine" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint field="priority" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint field="set_aside_reason" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint field="n_scans" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint field="contrast_day_k" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint field="contrast_night_k" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint field="mine_curve_r" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint field="mine_curve_level" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint field="fix_quality" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint field="figure" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint field="contrast_series" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint field="short_id" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint field="depth" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint field="diffusivity" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint field="likelihood" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint field="cue_confidence_pct" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
   </constraints>
   <constraintExpressions>
-    <constraint field="anomaly_id" exp="" desc=""/>
-    <constraint field="x" exp="" desc=""/>
-    <constraint field="y" exp="" desc=""/>
-    <constraint field="lat" exp="" desc=""/>
-    <constraint field="lon" exp="" desc=""/>
-    <constraint field="area_m2" exp="" desc=""/>
-    <constraint field="diameter_m" exp="" desc=""/>
-    <constraint field="circularity" exp="" desc=""/>
-    <constraint field="depth_m" exp="" desc=""/>
-    <constraint field="depth_sigma_m" exp="" desc=""/>
-    <constraint field="diffusivity_m2s" exp="" desc=""/>
-    <constraint field="diffusivity_sigma_m2s" exp="" desc=""/>
-    <constraint field="status" exp="" desc=""/>
-    <constraint field="polarity" exp="" desc=""/>
-    <constraint field="class_cue" exp="" desc=""/>
-    <constraint field="cue_confidence" exp="" desc=""/>
-    <constraint field="p_mine" exp="" desc=""/>
-    <constraint field="priority" exp="" desc=""/>
-    <constraint field="set_aside_reason" exp="" desc=""/>
-    <constraint field="n_scans" exp="" desc=""/>
-    <constraint field="contrast_day_k" exp="" desc=""/>
-    <constraint field="contrast_night_k" exp="" desc=""/>
-    <constraint field="mine_curve_r" exp="" desc=""/>
-    <constraint field="mine_curve_level" exp="" desc=""/>
-    <constraint field="fix_quality" exp="" desc=""/>
-    <constraint field="figure" exp="" desc=""/>
-    <constraint field="contrast_series" exp="" desc=""/>
-    <constraint field="short_id" exp="" desc=""/>
-    <constraint field="depth" exp="" desc=""/>
-    <constraint field="diffusivity" exp="" desc=""/>
-    <constraint field="likelihood" exp="" desc=""/>
-    <constraint field="cue_confidence_pct" exp="" desc=""/>
+    <constraint field="anomaly_id" desc="" exp=""/>
+    <constraint field="x" desc="" exp=""/>
+    <constraint field="y" desc="" exp=""/>
+    <constraint field="lat" desc="" exp=""/>
+    <constraint field="lon" desc="" exp=""/>
+    <constraint field="area_m2" desc="" exp=""/>
+    <constraint field="diameter_m" desc="" exp=""/>
+    <constraint field="circularity" desc="" exp=""/>
+    <constraint field="depth_m" desc="" exp=""/>
+    <constraint field="depth_sigma_m" desc="" exp=""/>
+    <constraint field="diffusivity_m2s" desc="" exp=""/>
+    <constraint field="diffusivity_sigma_m2s" desc="" exp=""/>
+    <constraint field="status" desc="" exp=""/>
+    <constraint field="polarity" desc="" exp=""/>
+    <constraint field="class_cue" desc="" exp=""/>
+    <constraint field="cue_confidence" desc="" exp=""/>
+    <constraint field="p_mine" desc="" exp=""/>
+    <constraint field="priority" desc="" exp=""/>
+    <constraint field="set_aside_reason" desc="" exp=""/>
+    <constraint field="n_scans" desc="" exp=""/>
+    <constraint field="contrast_day_k" desc="" exp=""/>
+    <constraint field="contrast_night_k" desc="" exp=""/>
+    <constraint field="mine_curve_r" desc="" exp=""/>
+    <constraint field="mine_curve_level" desc="" exp=""/>
+    <constraint field="fix_quality" desc="" exp=""/>
+    <constraint field="figure" desc="" exp=""/>
+    <constraint field="contrast_series" desc="" exp=""/>
+    <constraint field="short_id" desc="" exp=""/>
+    <constraint field="depth" desc="" exp=""/>
+    <constraint field="diffusivity" desc="" exp=""/>
+    <constraint field="likelihood" desc="" exp=""/>
+    <constraint field="cue_confidence_pct" desc="" exp=""/>
   </constraintExpressions>
   <expressionfields>
-    <field precision="0" typeName="" length="0" comment="" type="10" subType="0" expression="'S-' || lpad(to_string(to_int(regexp_substr(&quot;anomaly_id&quot;, '(\\d+)$'))), 3, '0')" name="short_id"/>
-    <field precision="0" typeName="" length="0" comment="" type="10" subType="0" expression="CASE WHEN &quot;depth_m&quot; * 100 IS NULL THEN 'not characterised' WHEN &quot;depth_sigma_m&quot; * 100 IS NULL THEN format_number(&quot;depth_m&quot; * 100, 1) || ' cm' ELSE format_number(&quot;depth_m&quot; * 100, 1) || ' ± ' || format_number(&quot;depth_sigma_m&quot; * 100, 1) || ' cm' END" name="depth"/>
-    <field precision="0" typeName="" length="0" comment="" type="10" subType="0" expression="CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 IS NULL THEN 'not characterised' WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 IS NULL THEN CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' mm²/s' ELSE CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' ± ' || CASE WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_sigma_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6))))) END || ' mm²/s' END" name="diffusivity"/>
-    <field precision="0" typeName="" length="0" comment="" type="10" subType="0" expression="CASE WHEN attribute('p_mine') IS NULL THEN 'not estimated' ELSE format_number(100 * attribute('p_mine'), 0) || ' %' END" name="likelihood"/>
-    <field precision="0" typeName="" length="0" comment="" type="10" subType="0" expression="CASE WHEN coalesce(attribute('cue_confidence'), attribute('confidence')) IS NULL THEN NULL ELSE format_number(100 * coalesce(attribute('cue_confidence'), attribute('confidence')), 0) || ' %' END" name="cue_confidence_pct"/>
+    <field type="10" typeName="" name="short_id" comment="" subType="0" precision="0" expression="'S-' || lpad(to_string(to_int(regexp_substr(&quot;anomaly_id&quot;, '(\\d+)$'))), 3, '0')" length="0"/>
+    <field type="10" typeName="" name="depth" comment="" subType="0" precision="0" expression="CASE WHEN &quot;depth_m&quot; * 100 IS NULL THEN 'not characterised' WHEN &quot;depth_sigma_m&quot; * 100 IS NULL THEN format_number(&quot;depth_m&quot; * 100, 1) || ' cm' ELSE format_number(&quot;depth_m&quot; * 100, 1) || ' ± ' || format_number(&quot;depth_sigma_m&quot; * 100, 1) || ' cm' END" length="0"/>
+    <field type="10" typeName="" name="diffusivity" comment="" subType="0" precision="0" expression="CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 IS NULL THEN 'not characterised' WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 > &quot;diffusivity_m2s&quot; * 1e6 THEN 'unconstrained' WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 IS NULL THEN CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' mm²/s' ELSE CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' ± ' || CASE WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_sigma_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6))))) END || ' mm²/s' END" length="0"/>
+    <field type="10" typeName="" name="likelihood" comment="" subType="0" precision="0" expression="CASE WHEN attribute('p_mine') IS NULL THEN 'not estimated' ELSE format_number(100 * attribute('p_mine'), 0) || ' %' END" length="0"/>
+    <field type="10" typeName="" name="cue_confidence_pct" comment="" subType="0" precision="0" expression="CASE WHEN coalesce(attribute('cue_confidence'), attribute('confidence')) IS NULL THEN NULL ELSE format_number(100 * coalesce(attribute('cue_confidence'), attribute('confidence')), 0) || ' %' END" length="0"/>
   </expressionfields>
-  <attributetableconfig actionWidgetStyle="dropDown" sortOrder="0" sortExpression="coalesce(attribute('priority'), 1000000 * (CASE WHEN &quot;class_cue&quot; = 'at_mine' THEN 0 WHEN &quot;class_cue&quot; = 'ap_mine' THEN 1 WHEN &quot;class_cue&quot; = 'unknown' THEN 2 ELSE 3 END) - round(1000 * max(abs(&quot;contrast_day_k&quot;), abs(&quot;contrast_night_k&quot;))))">
+  <attributetableconfig actionWidgetStyle="dropDown" sortExpression="coalesce(attribute('priority'), 1000000 * (CASE WHEN &quot;class_cue&quot; = 'at_mine' THEN 0 WHEN &quot;class_cue&quot; = 'ap_mine' THEN 1 WHEN &quot;class_cue&quot; = 'unknown' THEN 2 ELSE 3 END) - round(1000 * max(abs(&quot;contrast_day_k&quot;), abs(&quot;contrast_night_k&quot;))))" sortOrder="0">
     <columns>
-      <column hidden="0" width="-1" type="field" name="anomaly_id"/>
-      <column hidden="0" width="-1" type="field" name="x"/>
-      <column hidden="0" width="-1" type="field" name="y"/>
-      <column hidden="0" width="-1" type="field" name="lat"/>
-      <column hidden="0" width="-1" type="field" name="lon"/>
-      <column hidden="0" width="-1" type="field" name="area_m2"/>
-      <column hidden="0" width="-1" type="field" name="diameter_m"/>
-      <column hidden="0" width="-1" type="field" name="circularity"/>
-      <column hidden="0" width="-1" type="field" name="depth_m"/>
-      <column hidden="0" width="-1" type="field" name="depth_sigma_m"/>
-      <column hidden="0" width="-1" type="field" name="diffusivity_m2s"/>
-      <column hidden="0" width="-1" type="field" name="diffusivity_sigma_m2s"/>
-      <column hidden="0" width="-1" type="field" name="status"/>
-      <column hidden="0" width="-1" type="field" name="polarity"/>
-      <column hidden="0" width="-1" type="field" name="class_cue"/>
-      <column hidden="0" width="-1" type="field" name="cue_confidence"/>
-      <column hidden="0" width="-1" type="field" name="p_mine"/>
-      <column hidden="0" width="-1" type="field" name="priority"/>
-      <column hidden="0" width="-1" type="field" name="set_aside_reason"/>
-      <column hidden="0" width="-1" type="field" name="n_scans"/>
-      <column hidden="0" width="-1" type="field" name="contrast_day_k"/>
-      <column hidden="0" width="-1" type="field" name="contrast_night_k"/>
-      <column hidden="0" width="-1" type="field" name="mine_curve_r"/>
-      <column hidden="0" width="-1" type="field" name="mine_curve_level"/>
-      <column hidden="0" width="-1" type="field" name="fix_quality"/>
-      <column hidden="0" width="-1" type="field" name="figure"/>
-      <column hidden="0" width="-1" type="field" name="contrast_series"/>
-      <column hidden="0" width="-1" type="field" name="short_id"/>
-      <column hidden="0" width="-1" type="field" name="depth"/>
-      <column hidden="0" width="-1" type="field" name="diffusivity"/>
-      <column hidden="0" width="-1" type="field" name="likelihood"/>
-      <column hidden="0" width="-1" type="field" name="cue_confidence_pct"/>
-      <column hidden="1" width="-1" type="actions"/>
+      <column type="field" hidden="0" name="anomaly_id" width="-1"/>
+      <column type="field" hidden="0" name="x" width="-1"/>
+      <column type="field" hidden="0" name="y" width="-1"/>
+      <column type="field" hidden="0" name="lat" width="-1"/>
+      <column type="field" hidden="0" name="lon" width="-1"/>
+      <column type="field" hidden="0" name="area_m2" width="-1"/>
+      <column type="field" hidden="0" name="diameter_m" width="-1"/>
+      <column type="field" hidden="0" name="circularity" width="-1"/>
+      <column type="field" hidden="0" name="depth_m" width="-1"/>
+      <column type="field" hidden="0" name="depth_sigma_m" width="-1"/>
+      <column type="field" hidden="0" name="diffusivity_m2s" width="-1"/>
+      <column type="field" hidden="0" name="diffusivity_sigma_m2s" width="-1"/>
+      <column type="field" hidden="0" name="status" width="-1"/>
+      <column type="field" hidden="0" name="polarity" width="-1"/>
+      <column type="field" hidden="0" name="class_cue" width="-1"/>
+      <column type="field" hidden="0" name="cue_confidence" width="-1"/>
+      <column type="field" hidden="0" name="p_mine" width="-1"/>
+      <column type="field" hidden="0" name="priority" width="-1"/>
+      <column type="field" hidden="0" name="set_aside_reason" width="-1"/>
+      <column type="field" hidden="0" name="n_scans" width="-1"/>
+      <column type="field" hidden="0" name="contrast_day_k" width="-1"/>
+      <column type="field" hidden="0" name="contrast_night_k" width="-1"/>
+      <column type="field" hidden="0" name="mine_curve_r" width="-1"/>
+      <column type="field" hidden="0" name="mine_curve_level" width="-1"/>
+      <column type="field" hidden="0" name="fix_quality" width="-1"/>
+      <column type="field" hidden="0" name="figure" width="-1"/>
+      <column type="field" hidden="0" name="contrast_series" width="-1"/>
+      <column type="field" hidden="0" name="short_id" width="-1"/>
+      <column type="field" hidden="0" name="depth" width="-1"/>
+      <column type="field" hidden="0" name="diffusivity" width="-1"/>
+      <column type="field" hidden="0" name="likelihood" width="-1"/>
+      <column type="field" hidden="0" name="cue_confidence_pct" width="-1"/>
+      <column type="actions" hidden="1" width="-1"/>
     </columns>
   </attributetableconfig>
   <conditionalstyles>
@@ -979,58 +979,58 @@
   <featformsuppress>0</featformsuppress>
   <editorlayout>tablayout</editorlayout>
   <attributeEditorForm>
-    <attributeEditorContainer columnCount="1" showLabel="1" groupBox="0" visibilityExpressionEnabled="0" name="Suspect" visibilityExpression="">
-      <attributeEditorContainer columnCount="1" showLabel="1" groupBox="1" visibilityExpressionEnabled="0" name="Identification" visibilityExpression="">
-        <attributeEditorField showLabel="1" index="27" name="short_id"/>
-        <attributeEditorField showLabel="1" index="0" name="anomaly_id"/>
-        <attributeEditorField showLabel="1" index="17" name="priority"/>
-        <attributeEditorField showLabel="1" index="14" name="class_cue"/>
-        <attributeEditorField showLabel="1" index="30" name="likelihood"/>
-        <attributeEditorField showLabel="1" index="31" name="cue_confidence_pct"/>
-        <attributeEditorField showLabel="1" index="12" name="status"/>
-        <attributeEditorField showLabel="1" index="13" name="polarity"/>
-        <attributeEditorField showLabel="1" index="18" name="set_aside_reason"/>
+    <attributeEditorContainer name="Suspect" columnCount="1" showLabel="1" groupBox="0" visibilityExpressionEnabled="0" visibilityExpression="">
+      <attributeEditorContainer name="Identification" columnCount="1" showLabel="1" groupBox="1" visibilityExpressionEnabled="0" visibilityExpression="">
+        <attributeEditorField index="27" name="short_id" showLabel="1"/>
+        <attributeEditorField index="0" name="anomaly_id" showLabel="1"/>
+        <attributeEditorField index="17" name="priority" showLabel="1"/>
+        <attributeEditorField index="14" name="class_cue" showLabel="1"/>
+        <attributeEditorField index="30" name="likelihood" showLabel="1"/>
+        <attributeEditorField index="31" name="cue_confidence_pct" showLabel="1"/>
+        <attributeEditorField index="12" name="status" showLabel="1"/>
+        <attributeEditorField index="13" name="polarity" showLabel="1"/>
+        <attributeEditorField index="18" name="set_aside_reason" showLabel="1"/>
       </attributeEditorContainer>
-      <attributeEditorContainer columnCount="1" showLabel="1" groupBox="1" visibilityExpressionEnabled="0" name="Burial depth and soil" visibilityExpression="">
-        <attributeEditorField showLabel="1" index="28" name="depth"/>
-        <attributeEditorField showLabel="1" index="29" name="diffusivity"/>
+      <attributeEditorContainer name="Burial depth and soil" columnCount="1" showLabel="1" groupBox="1" visibilityExpressionEnabled="0" visibilityExpression="">
+        <attributeEditorField index="28" name="depth" showLabel="1"/>
+        <attributeEditorField index="29" name="diffusivity" showLabel="1"/>
       </attributeEditorContainer>
-      <attributeEditorContainer columnCount="1" showLabel="1" groupBox="1" visibilityExpressionEnabled="0" name="Thermal contrast" visibilityExpression="">
-        <attributeEditorField showLabel="1" index="20" name="contrast_day_k"/>
-        <attributeEditorField showLabel="1" index="21" name="contrast_night_k"/>
-        <attributeEditorField showLabel="1" index="22" name="mine_curve_r"/>
-        <attributeEditorField showLabel="1" index="23" name="mine_curve_level"/>
-        <attributeEditorField showLabel="1" index="19" name="n_scans"/>
+      <attributeEditorContainer name="Thermal contrast" columnCount="1" showLabel="1" groupBox="1" visibilityExpressionEnabled="0" visibilityExpression="">
+        <attributeEditorField index="20" name="contrast_day_k" showLabel="1"/>
+        <attributeEditorField index="21" name="contrast_night_k" showLabel="1"/>
+        <attributeEditorField index="22" name="mine_curve_r" showLabel="1"/>
+        <attributeEditorField index="23" name="mine_curve_level" showLabel="1"/>
+        <attributeEditorField index="19" name="n_scans" showLabel="1"/>
       </attributeEditorContainer>
-      <attributeEditorContainer columnCount="1" showLabel="1" groupBox="1" visibilityExpressionEnabled="0" name="Shape" visibilityExpression="">
-        <attributeEditorField showLabel="1" index="6" name="diameter_m"/>
-        <attributeEditorField showLabel="1" index="5" name="area_m2"/>
-        <attributeEditorField showLabel="1" index="7" name="circularity"/>
-      </attributeEditorContainer>
-    </attributeEditorContainer>
-    <attributeEditorContainer columnCount="1" showLabel="1" groupBox="0" visibilityExpressionEnabled="0" name="Contrast curve" visibilityExpression="">
-      <attributeEditorContainer columnCount="1" showLabel="1" groupBox="1" visibilityExpressionEnabled="0" name="Contrast curve" visibilityExpression="">
-        <attributeEditorField showLabel="1" index="25" name="figure"/>
+      <attributeEditorContainer name="Shape" columnCount="1" showLabel="1" groupBox="1" visibilityExpressionEnabled="0" visibilityExpression="">
+        <attributeEditorField index="6" name="diameter_m" showLabel="1"/>
+        <attributeEditorField index="5" name="area_m2" showLabel="1"/>
+        <attributeEditorField index="7" name="circularity" showLabel="1"/>
       </attributeEditorContainer>
     </attributeEditorContainer>
-    <attributeEditorContainer columnCount="1" showLabel="1" groupBox="0" visibilityExpressionEnabled="0" name="Position" visibilityExpression="">
-      <attributeEditorContainer columnCount="1" showLabel="1" groupBox="1" visibilityExpressionEnabled="0" name="Position" visibilityExpression="">
-        <attributeEditorField showLabel="1" index="1" name="x"/>
-        <attributeEditorField showLabel="1" index="2" name="y"/>
-        <attributeEditorField showLabel="1" index="3" name="lat"/>
-        <attributeEditorField showLabel="1" index="4" name="lon"/>
-        <attributeEditorField showLabel="1" index="24" name="fix_quality"/>
+    <attributeEditorContainer name="Contrast curve" columnCount="1" showLabel="1" groupBox="0" visibilityExpressionEnabled="0" visibilityExpression="">
+      <attributeEditorContainer name="Contrast curve" columnCount="1" showLabel="1" groupBox="1" visibilityExpressionEnabled="0" visibilityExpression="">
+        <attributeEditorField index="25" name="figure" showLabel="1"/>
       </attributeEditorContainer>
     </attributeEditorContainer>
-    <attributeEditorContainer columnCount="1" showLabel="1" groupBox="0" visibilityExpressionEnabled="0" name="Stored values" visibilityExpression="">
-      <attributeEditorContainer columnCount="1" showLabel="1" groupBox="1" visibilityExpressionEnabled="0" name="Stored values" visibilityExpression="">
-        <attributeEditorField showLabel="1" index="8" name="depth_m"/>
-        <attributeEditorField showLabel="1" index="9" name="depth_sigma_m"/>
-        <attributeEditorField showLabel="1" index="10" name="diffusivity_m2s"/>
-        <attributeEditorField showLabel="1" index="11" name="diffusivity_sigma_m2s"/>
-        <attributeEditorField showLabel="1" index="16" name="p_mine"/>
-        <attributeEditorField showLabel="1" index="15" name="cue_confidence"/>
-        <attributeEditorField showLabel="1" index="26" name="contrast_series"/>
+    <attributeEditorContainer name="Position" columnCount="1" showLabel="1" groupBox="0" visibilityExpressionEnabled="0" visibilityExpression="">
+      <attributeEditorContainer name="Position" columnCount="1" showLabel="1" groupBox="1" visibilityExpressionEnabled="0" visibilityExpression="">
+        <attributeEditorField index="1" name="x" showLabel="1"/>
+        <attributeEditorField index="2" name="y" showLabel="1"/>
+        <attributeEditorField index="3" name="lat" showLabel="1"/>
+        <attributeEditorField index="4" name="lon" showLabel="1"/>
+        <attributeEditorField index="24" name="fix_quality" showLabel="1"/>
+      </attributeEditorContainer>
+    </attributeEditorContainer>
+    <attributeEditorContainer name="Stored values" columnCount="1" showLabel="1" groupBox="0" visibilityExpressionEnabled="0" visibilityExpression="">
+      <attributeEditorContainer name="Stored values" columnCount="1" showLabel="1" groupBox="1" visibilityExpressionEnabled="0" visibilityExpression="">
+        <attributeEditorField index="8" name="depth_m" showLabel="1"/>
+        <attributeEditorField index="9" name="depth_sigma_m" showLabel="1"/>
+        <attributeEditorField index="10" name="diffusivity_m2s" showLabel="1"/>
+        <attributeEditorField index="11" name="diffusivity_sigma_m2s" showLabel="1"/>
+        <attributeEditorField index="16" name="p_mine" showLabel="1"/>
+        <attributeEditorField index="15" name="cue_confidence" showLabel="1"/>
+        <attributeEditorField index="26" name="contrast_series" showLabel="1"/>
       </attributeEditorContainer>
     </attributeEditorContainer>
   </attributeEditorForm>

@@ -57,6 +57,9 @@ def ranked_products(products, tmp_path_factory):
     ids = sorted(suspects["anomaly_id"], reverse=True)
     suspects["priority"] = [ids.index(a) + 1 for a in suspects["anomaly_id"]]
     suspects["p_mine"] = [1.0 - 0.1 * (p - 1) for p in suspects["priority"]]
+    # a diffusivity the curve did not constrain: 1-sigma larger than the value (table's end)
+    loose = suspects["anomaly_id"] == "A004"
+    suspects.loc[loose, ["diffusivity_m2s", "diffusivity_sigma_m2s"]] = [3.2e-5, 1.2e-3]
     clutter = suspects["class_cue"] == "clutter"
     layers["candidates"] = suspects[clutter].assign(set_aside_reason="one scan only")
     layers["suspects"] = suspects[~clutter]
@@ -92,6 +95,18 @@ def test_likelihood_in_percent_with_ranking_fields(ranked_products, qgis_app):
     assert shown(layer, rows["A001"], "likelihood") == "30 %"
     assert shown(layer, rows["A001"], "cue_confidence_pct") \
         == f"{100 * rows['A001']['cue_confidence']:.0f} %"
+
+
+def test_unconstrained_diffusivity_is_not_printed_as_a_number(ranked_products, qgis_app):
+    """As report.html shows it: the form's text is the report's, not '32 ± 1.2e+03'."""
+    from clearfast_gis.report.html import UNCONSTRAINED_TEXT, diffusivity_text
+
+    layer = _open(ranked_products / "anomalies.gpkg")
+    rows = _by_id(layer)
+    a4 = rows["A004"]
+    assert shown(layer, a4, "diffusivity") == UNCONSTRAINED_TEXT \
+        == diffusivity_text(a4["diffusivity_m2s"], a4["diffusivity_sigma_m2s"])
+    assert shown(layer, rows["A008"], "diffusivity") == "0.40 ± 0.080 mm²/s"
 
 
 def _sorted_ids(layer) -> list[str]:

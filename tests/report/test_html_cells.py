@@ -19,6 +19,8 @@ def _fmt(key: str) -> str:
     (1.23e-5, 4.0e-6, "12 ± 4.0"),
     (9.8e-8, math.nan, "0.098"),
     (3.16e-8, None, "0.032"),
+    (3.2e-5, 1.2e-3, "unconstrained"),  # 1-sigma larger than the value: not a number to read
+    (2.0e-7, 2.0e-7, "0.20 ± 0.20"),
 ])
 def test_diffusivity_in_mm2_per_s_with_two_significant_digits(alpha, sigma, text):
     rec = {"diffusivity_m2s": alpha, "diffusivity_sigma_m2s": sigma}
