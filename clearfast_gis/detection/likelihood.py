@@ -12,7 +12,11 @@ size_misfit   ``min_k |ln(diameter_m / D_k)|`` over the survey's mine types ``D_
 circularity   0-1 (docs/detection.md)
 diurnal       1 for ``warm_day_cool_night`` (an explosive's signature), else 0
 cool_by_day   1 when the daytime contrast is negative (stones, metal), else 0
-characterised 1 when the inversion's status is ``ok``, else 0
+characterised 1 when the inversion's fit status is ``ok`` (``fit_status``: the curve is
+              explained by a buried object on the fit's own and the propagated chain
+              terms; a depth flagged only because a gain error moves it onto another
+              branch still counts), else 0; ``status`` when the record has no
+              ``fit_status``
 curve_match   ``mine_curve_r``: correlation of the contrast curve with the day's modelled
               mine curve (:mod:`clearfast_gis.detection.curve`), -1 to 1; 0 when unknown
 curve_offset  ``min(|mine_curve_level|, 2)``: how far the curve sits off the modelled mine
@@ -76,7 +80,7 @@ def features(record: Mapping) -> np.ndarray:
     diurnal = 1.0 if record.get("diurnal_behaviour") == "warm_day_cool_night" else 0.0
     day = record.get("contrast_day_k")
     cool = 1.0 if day is not None and math.isfinite(float(day)) and float(day) < 0 else 0.0
-    ok = record.get("status") == "ok"
+    ok = (record.get("fit_status") or record.get("status")) == "ok"
     match = record.get("mine_curve_r")
     match = float(match) if match is not None and math.isfinite(float(match)) else 0.0
     level = record.get("mine_curve_level")

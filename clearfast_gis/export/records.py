@@ -109,6 +109,7 @@ def suspect_records(anomalies: AnomalySet, times_s: np.ndarray, longitude_deg: f
             "diffusivity_m2s": inv.alpha_m2s if inv else None,
             "diffusivity_sigma_m2s": inv.alpha_sigma_m2s if inv else None,
             "status": inv.status if inv else "not_characterised",
+            "fit_status": (inv.fit_status or inv.status) if inv else "not_characterised",
             "polarity": _daytime_sign(f.polarity, day, f.contrast_k),
             "diurnal_behaviour": f.polarity, "class_cue": cue, "cue_confidence": float(conf),
             "n_scans": int(f.n_scans), "contrast_day_k": day, "contrast_night_k": night,

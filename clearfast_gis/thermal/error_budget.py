@@ -28,6 +28,11 @@ contrast
 offset: background ring           0.012 K         the same regression's intercepts (rms)
 ================================  ==============  =========================================
 
+The propagation is linear. Where the fit's valley is flat in depth, a few per cent of gain
+moves the best fit onto another branch: the chain fits each curve again with the model times
+``1 +- G`` (:func:`gain_sigma`; :attr:`Inversion.gain_refits`) and the gain term's shift is the
+larger of the two (:func:`chain_sigmas`).
+
 **Errors of the model, as depth (m) and log10 diffusivity terms**, measured by changing one
 link at a time (BENCHMARKS.md, "Depth bias"; ``benchmarks/depth_bias.py``):
 
@@ -86,6 +91,12 @@ GAIN_TERM = math.sqrt(sum(v * v for v in GAIN_TERMS.values()))
 """The gain terms in quadrature."""
 
 
+def gain_sigma(extra_gain: float = 0.0) -> float:
+    """1-sigma relative error of the contrast curve's amplitude: :data:`GAIN_TERM` and
+    ``extra_gain`` (a canopy's seen share) in quadrature."""
+    return math.hypot(GAIN_TERM, extra_gain)
+
+
 def curve_term_shifts(jacobian: np.ndarray, model_k: np.ndarray,
                       extra_gain: float = 0.0) -> np.ndarray:
     """1-sigma shifts of (depth m, log10 alpha) from the curve terms, through the fit.
@@ -105,7 +116,7 @@ def curve_term_shifts(jacobian: np.ndarray, model_k: np.ndarray,
         the Jacobian is singular (the fit cannot tell the two apart).
     """
     j = np.asarray(jacobian, dtype=float)
-    gain = math.hypot(GAIN_TERM, extra_gain)
+    gain = gain_sigma(extra_gain)
     curves = np.stack([gain * np.asarray(model_k, dtype=float),
                        np.full(j.shape[0], OFFSET_TERM_K)], axis=1)
     jtj = j.T @ j
@@ -114,15 +125,25 @@ def curve_term_shifts(jacobian: np.ndarray, model_k: np.ndarray,
     return np.linalg.solve(jtj, j.T @ curves).T
 
 
-def chain_sigmas(inv: Inversion, extra_gain: float = 0.0) -> tuple[float, float]:
+def chain_sigmas(inv: Inversion, extra_gain: float = 0.0, refits: bool = True
+                 ) -> tuple[float, float]:
     """The chain's 1-sigma (depth m, log10 alpha) error of ``inv``: every term of the module
     notes in quadrature, the curve terms through ``inv``'s own Jacobian; ``extra_gain``: a
     further relative gain error of the curve (a canopy's seen share,
-    :func:`clearfast_gis.thermal.canopy.cover_gain_sigma`)."""
+    :func:`clearfast_gis.thermal.canopy.cover_gain_sigma`).
+
+    When ``inv`` was fitted again with the gain off by +- 1 sigma (:attr:`Inversion.gain_refits`,
+    the same ``extra_gain``), the gain term's shift is the larger of the propagated one and
+    the refits' largest move: a flat valley's jump to another branch counts in full
+    (``refits=False``: the propagated shift alone)."""
     sd2 = sum(v * v for v in DEPTH_TERMS_M.values()) + (DEPTH_RELATIVE * max(inv.depth_m, 0)) ** 2
     sa2 = sum(v * v for v in LOG10_ALPHA_TERMS.values())
     if inv.jacobian is not None:
-        shifts = curve_term_shifts(inv.jacobian, inv.model_contrast_k, extra_gain)
+        shifts = np.abs(curve_term_shifts(inv.jacobian, inv.model_contrast_k, extra_gain))
+        if refits and inv.gain_refits is not None:
+            moved = np.max(np.abs(inv.gain_refits - [inv.depth_m, math.log10(inv.alpha_m2s)]),
+                           axis=0)
+            shifts[0] = np.maximum(shifts[0], moved)
         sd2 += float(np.sum(shifts[:, 0] ** 2))
         sa2 += float(np.sum(shifts[:, 1] ** 2))
     return math.sqrt(sd2), math.sqrt(sa2)
@@ -139,15 +160,27 @@ def with_chain_errors(inv: Inversion, extra_gain: float = 0.0) -> Inversion:
     :data:`MAX_REPORTED_DEPTH_SIGMA_M`).
 
     An estimate that was ``ok`` becomes ``not_characterised`` when the total depth sigma
-    exceeds :data:`~clearfast_gis.thermal.inversion.MAX_DEPTH_SIGMA_M`.
+    exceeds :data:`~clearfast_gis.thermal.inversion.MAX_DEPTH_SIGMA_M`. ``fit_status`` is the
+    status the propagated terms alone give (without the gain refits' moves): whether the
+    curve is well explained by a buried object, which the mine likelihood reads, apart from
+    whether its depth survives a gain error.
     """
     chain_d, chain_la = chain_sigmas(inv, extra_gain)
-    sd = math.hypot(inv.depth_sigma_m, chain_d)
-    sd = min(sd, MAX_REPORTED_DEPTH_SIGMA_M) if math.isfinite(sd) else MAX_REPORTED_DEPTH_SIGMA_M
+    sd = _capped(math.hypot(inv.depth_sigma_m, chain_d))
     sla = math.hypot(inv.log10_alpha_sigma, chain_la)
-    status = inv.status
-    if status == "ok" and sd > MAX_DEPTH_SIGMA_M:
-        status = "not_characterised"
+    linear_sd = _capped(math.hypot(inv.depth_sigma_m, chain_sigmas(inv, extra_gain, False)[0]))
     return dataclasses.replace(inv, depth_sigma_m=sd, log10_alpha_sigma=sla,
                                alpha_sigma_m2s=inv.alpha_m2s * math.log(10.0) * sla,
-                               status=status)
+                               status=_flagged(inv.status, sd),
+                               fit_status=_flagged(inv.status, linear_sd))
+
+
+def _capped(sigma_m: float) -> float:
+    return min(sigma_m, MAX_REPORTED_DEPTH_SIGMA_M) if math.isfinite(sigma_m) \
+        else MAX_REPORTED_DEPTH_SIGMA_M
+
+
+def _flagged(status: str, depth_sigma_m: float) -> str:
+    """``ok`` becomes ``not_characterised`` beyond the depth sigma limit."""
+    return "not_characterised" if status == "ok" and depth_sigma_m > MAX_DEPTH_SIGMA_M \
+        else status

@@ -60,8 +60,10 @@ class Inversion:
         Uncertainty of log10 alpha (the fit's own parameter).
     status : str
         First that applies: ``weak_contrast`` (peak modelled contrast < 3 noise sigma);
-        ``not_characterised`` when the misfit exceeds 3 noise sigma; ``at_bound`` (depth
-        at the deepest node or diffusivity at either end of the table);
+        ``not_characterised`` when the misfit exceeds 3 noise sigma or the diffusivity
+        sits at the table's low end (below any solid's: the depth was traded for it);
+        ``at_bound`` (depth at the deepest node or diffusivity at the table's high end,
+        metal-like);
         ``not_characterised`` (depth sigma > 2 cm, log10 alpha sigma > 0.5 or a rival
         optimum at another depth within delta chi-square 4); else ``ok``.
     residual_rms_k : float
@@ -78,6 +80,13 @@ class Inversion:
         Derivatives of the modelled contrast at the scan times with respect to the depth
         (K/m) and log10 alpha (K) at the estimate: how the fit maps an error of the curve to
         the estimates (:mod:`clearfast_gis.thermal.error_budget`). None when not known.
+    gain_refits : ndarray, shape (2, 2), optional
+        (depth m, log10 alpha) of the fit made again with the model's contrast times
+        ``1 + gain_sigma`` (row 0) and ``1 - gain_sigma`` (row 1), each from every local
+        minimum of the table (:func:`invert_anomaly` ``gain_sigma``). None when not made.
+    fit_status : str, optional
+        The status without the gain refits' moves
+        (:func:`clearfast_gis.thermal.error_budget.with_chain_errors`); None: as ``status``.
     """
 
     depth_m: float
@@ -92,6 +101,8 @@ class Inversion:
     correlation: float
     model_contrast_k: np.ndarray
     jacobian: np.ndarray | None = field(default=None, compare=False)
+    gain_refits: np.ndarray | None = field(default=None, compare=False)
+    fit_status: str | None = None
 
 
 def _local_minima(cost: np.ndarray, n: int) -> list[tuple[int, int]]:
@@ -123,6 +134,7 @@ def invert_anomaly(
     ring_m: tuple[float, float] | None = None,
     blur_m: float = 0.0,
     gain: ArrayLike | None = None,
+    gain_sigma: float = 0.0,
 ) -> Inversion:
     """Estimate burial depth and diffusivity of one anomaly.
 
@@ -161,6 +173,14 @@ def invert_anomaly(
     gain : array_like, shape (S,), optional
         Per-scan factor from the model's kinetic contrast to the measured one (the apparent
         contrast, :func:`clearfast_gis.thermal.apparent.apparent_gain`); 1 when omitted.
+    gain_sigma : float
+        1-sigma relative error of the curve's amplitude that the fit cannot see (the chain's
+        gain terms, :func:`clearfast_gis.thermal.error_budget.gain_sigma`). When positive the
+        curve is fitted twice more, with the model's contrast times ``1 + gain_sigma`` and
+        ``1 - gain_sigma``, each from every local minimum of the table
+        (:attr:`Inversion.gain_refits`): where the fit's valley is flat in depth, a small
+        gain error moves the estimate onto another branch, which the error propagated
+        through the Jacobian at the estimate does not show.
 
     Returns
     -------
@@ -188,23 +208,7 @@ def invert_anomaly(
     grid = table.contrast_for(radius_m, t, over_m, ring_m, blur_m) * g
     depths, la = table.depths_m, table.log10_alpha
     spline = contrast_spline(depths, la, grid)
-    lo, hi = np.array([depths[0], la[0]]), np.array([depths[-1], la[-1]])
-
-    def resid(p: np.ndarray) -> np.ndarray:
-        return spline(p[None, :])[0] - obs
-
-    def jac(p: np.ndarray) -> np.ndarray:
-        x = p[None, :]
-        return np.stack([spline(x, nu=(1, 0))[0], spline(x, nu=(0, 1))[0]], axis=1)
-
-    cost = np.sum((grid - obs) ** 2, axis=-1)
-    span = hi - lo
-    fits = []
-    for i, j in _local_minima(cost, 4):
-        x0 = np.clip([depths[i], la[j]], lo + 1e-4 * span, hi - 1e-4 * span)
-        fits.append(least_squares(resid, x0, jac=jac, bounds=(lo, hi), method="trf",
-                                  x_scale=[0.01, 0.25], xtol=1e-10, ftol=1e-12))
-    fits.sort(key=lambda s: s.cost)
+    fits = _fits(spline, grid, obs, depths, la)
     best = fits[0]
     d, lalpha = best.x
     r = best.fun
@@ -224,6 +228,10 @@ def invert_anomaly(
     except np.linalg.LinAlgError:
         sig = np.array([np.inf, np.inf])
         corr = 0.0
+    refits = None
+    if gain_sigma > 0:
+        refits = np.array([_fits(spline, grid, obs, depths, la, 1.0 + k * gain_sigma)[0].x
+                           for k in (1.0, -1.0)])
     model = spline(best.x[None, :])[0]
     peak = float(np.max(np.abs(model)))
     alpha = 10.0**lalpha
@@ -238,7 +246,11 @@ def invert_anomaly(
         status = "weak_contrast"
     elif misfit:
         status = "not_characterised"
-    elif d >= depths[-1] - tol_d or lalpha <= la[0] + tol_a or lalpha >= la[-1] - tol_a:
+    elif lalpha <= la[0] + tol_a:
+        # slower than any solid (the table's low end is 3e-8 m2/s, a third of TNT's): the
+        # fit traded depth for an impossible diffusivity, so the depth says nothing
+        status = "not_characterised"
+    elif d >= depths[-1] - tol_d or lalpha >= la[-1] - tol_a:
         status = "at_bound"
     elif sig[0] > MAX_DEPTH_SIGMA_M or sig[1] > MAX_LOG10_ALPHA_SIGMA or rivals:
         status = "not_characterised"
@@ -249,5 +261,34 @@ def invert_anomaly(
         alpha_sigma_m2s=float(alpha * np.log(10.0) * sig[1]),
         log10_alpha_sigma=float(sig[1]), status=status, residual_rms_k=rms, noise_k=noise,
         peak_contrast_k=peak, correlation=corr, model_contrast_k=model,
-        jacobian=np.asarray(jm, dtype=float),
+        jacobian=np.asarray(jm, dtype=float), gain_refits=refits,
     )
+
+
+def _fits(spline, grid: np.ndarray, obs: np.ndarray, depths: np.ndarray, la: np.ndarray,
+          scale: float = 1.0) -> list:
+    """Bounded least-squares fits of ``scale`` times the table's contrast to ``obs``, one
+    from each of the (up to 4) lowest local minima of the table's cost grid, best first.
+
+    ``spline`` interpolates ``grid`` (depth x log10 alpha x scans, K) over the nodes
+    ``depths`` (m) and ``la`` (log10 m2/s); ``obs`` (S,) is the measured contrast, K.
+    Returns scipy ``OptimizeResult`` objects (``x`` = (depth m, log10 alpha)).
+    """
+    lo, hi = np.array([depths[0], la[0]]), np.array([depths[-1], la[-1]])
+
+    def resid(p: np.ndarray) -> np.ndarray:
+        return scale * spline(p[None, :])[0] - obs
+
+    def jac(p: np.ndarray) -> np.ndarray:
+        x = p[None, :]
+        return scale * np.stack([spline(x, nu=(1, 0))[0], spline(x, nu=(0, 1))[0]], axis=1)
+
+    cost = np.sum((scale * grid - obs) ** 2, axis=-1)
+    span = hi - lo
+    fits = []
+    for i, j in _local_minima(cost, 4):
+        x0 = np.clip([depths[i], la[j]], lo + 1e-4 * span, hi - 1e-4 * span)
+        fits.append(least_squares(resid, x0, jac=jac, bounds=(lo, hi), method="trf",
+                                  x_scale=[0.01, 0.25], xtol=1e-10, ftol=1e-12))
+    fits.sort(key=lambda s: s.cost)
+    return fits

@@ -22,7 +22,7 @@ import numpy as np
 from clearfast_gis.detection.features import AnomalyFeatures
 from clearfast_gis.progress import NULL_PROGRESS, Progress
 from clearfast_gis.thermal.canopy import cover_gain_sigma, seen_share, under_canopy
-from clearfast_gis.thermal.error_budget import with_chain_errors
+from clearfast_gis.thermal.error_budget import gain_sigma, with_chain_errors
 from clearfast_gis.thermal.forcing import Forcing
 from clearfast_gis.thermal.inversion import Inversion, invert_anomaly
 from clearfast_gis.thermal.materials import MATERIALS, Soil, get_soil
@@ -182,9 +182,11 @@ def characterise(features: list[AnomalyFeatures], times_s: np.ndarray, forcing: 
         ring = first_band(f.ring_k) + ZERO_CELSIUS_K
         r_tab = float(np.clip(r, nodes.min(), nodes.max()))
         if (np.isfinite(centre) & np.isfinite(ring)).sum() >= 4:
+            extra = cover_gain_sigma(canopy)
             out[f.id] = with_chain_errors(invert_anomaly(times_s, centre, ring, forcing, soil,
-                                                         r_tab, table=table),
-                                          cover_gain_sigma(canopy))
+                                                         r_tab, table=table,
+                                                         gain_sigma=gain_sigma(extra)),
+                                          extra)
         progress.advance()
     progress.close()
     return out

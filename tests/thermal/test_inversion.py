@@ -20,15 +20,6 @@ NOISE_K = 0.05
 HEIGHT_M = 0.05
 
 
-@pytest.fixture(scope="module")
-def table(forcing, scans):
-    return build_site_table(
-        forcing, SOIL, RADIUS_M, scans, height_m=HEIGHT_M,
-        depths_m=[0.0, 0.01, 0.02, 0.03, 0.04, 0.06, 0.08, 0.10, 0.15, 0.20],
-        log10_alpha=[-7.5, -7.25, -7.0, -6.5, -6.0, -5.0, -4.5],
-    )
-
-
 def _observe(forcing, scans, depth_m, material="tnt", seed=0):
     """Truth from the twice-finer model, 0.05 K noise on the centre."""
     obj = BuriedObject(RADIUS_M, HEIGHT_M, depth_m, MATERIALS[material])
