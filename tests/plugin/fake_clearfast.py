@@ -3,7 +3,8 @@
 Used to test the plugin's progress parsing and cancellation independently of the pipeline.
 ``FAKE_CLEARFAST_STEPS`` (default 5) steps of ``FAKE_CLEARFAST_STEP_S`` seconds (default
 0.02); ``process``/``detect`` write a demo products folder (``-o`` or the PRODUCTS argument);
-``FAKE_CLEARFAST_PID_FILE`` receives the process id; ``FAKE_CLEARFAST_FAIL`` makes it fail with
+``options`` answers at once with no defaults; ``FAKE_CLEARFAST_PID_FILE`` receives the
+process id; ``FAKE_CLEARFAST_FAIL`` makes it fail with
 a one-line error.
 """
 
@@ -16,6 +17,11 @@ import time
 
 
 def main(argv: list[str]) -> int:
+    if argv[:1] == ["options"]:
+        # answered at once, as the toolkit does: the plugin asks it before its first run, and
+        # a test that cancels a long fake run must not wait for this query's fake steps
+        print(json.dumps({"process": {}}), flush=True)
+        return 0
     pid_file = os.environ.get("FAKE_CLEARFAST_PID_FILE")
     if pid_file:
         with open(pid_file, "w") as fh:
