@@ -38,7 +38,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from clearfast_gis.thermal.error_budget import DEPTH_TERMS_M, OFFSET_TERM_K
+from clearfast_gis.thermal.error_budget import OFFSET_TERM_K, model_depth_variance
 from clearfast_gis.thermal.inversion import Inversion
 
 __all__ = ["DISC_RING_GAIN", "DISC_RING_GAIN_SIGMA", "MAX_DEEP_SIGMA_M", "PROFILE_DEPTHS_M",
@@ -227,8 +227,7 @@ def depth_profile(contrast_k: np.ndarray, noise_k: np.ndarray, templates_k: np.n
 def model_sigma_m(depth_m: float) -> float:
     """The model's 1-sigma depth terms at ``depth_m`` (m), in quadrature, m
     (:mod:`clearfast_gis.thermal.error_budget`)."""
-    return math.sqrt(sum(v * v for v in DEPTH_TERMS_M.values())
-                     + (SHAPE_DEPTH_RELATIVE * max(depth_m, 0.0)) ** 2)
+    return math.sqrt(model_depth_variance(depth_m, SHAPE_DEPTH_RELATIVE))
 
 
 def deep_inversion(profile: DepthProfile, noise_k: float, ratio: float = 0.0) -> Inversion:

@@ -91,6 +91,12 @@ GAIN_TERM = math.sqrt(sum(v * v for v in GAIN_TERMS.values()))
 """The gain terms in quadrature."""
 
 
+def model_depth_variance(depth_m: float, relative: float = DEPTH_RELATIVE) -> float:
+    """The model's depth terms at ``depth_m`` (m) in quadrature: :data:`DEPTH_TERMS_M` and
+    ``relative`` times the depth, as a variance, m²."""
+    return sum(v * v for v in DEPTH_TERMS_M.values()) + (relative * max(depth_m, 0)) ** 2
+
+
 def gain_sigma(extra_gain: float = 0.0) -> float:
     """1-sigma relative error of the contrast curve's amplitude: :data:`GAIN_TERM` and
     ``extra_gain`` (a canopy's seen share) in quadrature."""
@@ -136,7 +142,7 @@ def chain_sigmas(inv: Inversion, extra_gain: float = 0.0, refits: bool = True
     the same ``extra_gain``), the gain term's shift is the larger of the propagated one and
     the refits' largest move: a flat valley's jump to another branch counts in full
     (``refits=False``: the propagated shift alone)."""
-    sd2 = sum(v * v for v in DEPTH_TERMS_M.values()) + (DEPTH_RELATIVE * max(inv.depth_m, 0)) ** 2
+    sd2 = model_depth_variance(inv.depth_m)
     sa2 = sum(v * v for v in LOG10_ALPHA_TERMS.values())
     if inv.jacobian is not None:
         shifts = np.abs(curve_term_shifts(inv.jacobian, inv.model_contrast_k, extra_gain))

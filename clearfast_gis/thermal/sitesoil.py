@@ -175,6 +175,7 @@ def characterise(features: list[AnomalyFeatures], times_s: np.ndarray, forcing: 
     forcing = under_canopy(forcing, canopy)
     table = chain_site_table(forcing, soil, nodes if nodes.size > 1 else float(nodes[0]),
                              times_s, canopy)
+    extra = cover_gain_sigma(canopy)
     out: dict[int, Inversion] = {}
     progress.start("characterise", len(features))
     for f, r in zip(features, radii, strict=True):
@@ -182,7 +183,6 @@ def characterise(features: list[AnomalyFeatures], times_s: np.ndarray, forcing: 
         ring = first_band(f.ring_k) + ZERO_CELSIUS_K
         r_tab = float(np.clip(r, nodes.min(), nodes.max()))
         if (np.isfinite(centre) & np.isfinite(ring)).sum() >= 4:
-            extra = cover_gain_sigma(canopy)
             out[f.id] = with_chain_errors(invert_anomaly(times_s, centre, ring, forcing, soil,
                                                          r_tab, table=table,
                                                          gain_sigma=gain_sigma(extra)),
