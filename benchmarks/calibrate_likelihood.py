@@ -30,7 +30,7 @@ from clearfast_gis.detection.screening import screen
 from clearfast_gis.evaluation.operating import reliability_table
 from clearfast_gis.evaluation.truth import MINE_KINDS, read_truth_objects
 
-MODEL_VERSION = "logistic-4"
+MODEL_VERSION = "logistic-5"
 
 
 def detection_records(products: Path) -> list[dict]:

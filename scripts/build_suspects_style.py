@@ -127,13 +127,15 @@ ALIASES = {
     "mine_curve_r": "Match with a mine's diurnal curve (-1 to 1)",
     "mine_curve_level": "Offset from a mine's diurnal curve (swings)",
     "fix_quality": "GNSS fix quality",
+    "found_by": "Found by (scans / stack)",
     "figure": "Contrast curve", "contrast_series": "Contrast series (JSON)",
 }
 
 FORM = (
     ("Suspect", (
         ("Identification", ("short_id", "anomaly_id", "priority", "class_cue", "likelihood",
-                            "cue_confidence_pct", "status", "polarity", "set_aside_reason")),
+                            "cue_confidence_pct", "status", "found_by", "polarity",
+                            "set_aside_reason")),
         ("Burial depth and soil", ("depth", "diffusivity")),
         ("Thermal contrast", ("contrast_day_k", "contrast_night_k", "mine_curve_r",
                               "mine_curve_level", "n_scans")),

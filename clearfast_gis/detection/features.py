@@ -447,3 +447,18 @@ def features_table(features: list[AnomalyFeatures]) -> dict[str, np.ndarray]:
     names = ["id", "row", "col", "x", "y", "area_px", "area_m2", "diameter_px", "diameter_m",
              "circularity", "axis_ratio", "compactness", "polarity", "n_scans", "score"]
     return {k: np.array([getattr(f, k) for f in features]) for k in names}
+
+
+FOUND_BY_SCANS = "scans"
+"""``found_by`` of a blob the detector found in the scans' mosaics (docs/detection.md)."""
+
+FOUND_BY_STACK = "stack"
+"""``found_by`` of a deep core: found only by the matched filter over the whole stack of scans
+(:mod:`clearfast_gis.detection.deep`), a disc of the reference mine's radius laid at the
+score's peak, whose outline and circularity are therefore not measured."""
+
+
+def found_by(feature: AnomalyFeatures) -> str:
+    """How a detection was found: :data:`FOUND_BY_STACK` for a deep core (it carries its
+    disc-ring contrast, ``core_contrast_k``), else :data:`FOUND_BY_SCANS`."""
+    return FOUND_BY_STACK if feature.core_contrast_k is not None else FOUND_BY_SCANS

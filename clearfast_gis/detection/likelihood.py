@@ -22,6 +22,11 @@ curve_match   ``mine_curve_r``: correlation of the contrast curve with the day's
 curve_offset  ``min(|mine_curve_level|, 2)``: how far the curve sits off the modelled mine
               curve, in swings of that curve (0 for a mine; about 1 for the bare edge of a
               grass patch, warm at night); 0 when unknown
+stack_core    1 for a deep core (``found_by`` ``stack``): found only by the matched filter
+              over the day's stack (docs/detection.md), a disc laid at the score's peak, so
+              its circularity (1) is not measured; soil texture that follows a buried
+              object's curve gives such cores too, and only a depth profile that explains
+              the curve (``characterised``) tells a deep mine from it
 ============  ==========================================================================
 
 The object's diffusivity is not a feature (it was, as ``alpha_misfit``, in ``logistic-2``):
@@ -51,10 +56,11 @@ from importlib import resources
 
 import numpy as np
 
+from clearfast_gis.detection.features import FOUND_BY_STACK
 from clearfast_gis.minetypes import MINE_TYPES
 
 FEATURES = ("strength", "size_misfit", "circularity", "diurnal", "cool_by_day",
-            "characterised", "curve_match", "curve_offset")
+            "characterised", "curve_match", "curve_offset", "stack_core")
 """Model features, in the order of the coefficients."""
 
 MINE_TYPE_DIAMETERS_M = {t.name: t.diameter_m for t in MINE_TYPES}
@@ -86,8 +92,9 @@ def features(record: Mapping) -> np.ndarray:
     level = record.get("mine_curve_level")
     offset = min(abs(float(level)), MAX_CURVE_OFFSET) \
         if level is not None and math.isfinite(float(level)) else 0.0
+    core = 1.0 if record.get("found_by") == FOUND_BY_STACK else 0.0
     return np.array([math.log10(max(score, 0.1)), min(size, 3.0), circ, diurnal, cool,
-                     1.0 if ok else 0.0, match, offset])
+                     1.0 if ok else 0.0, match, offset, core])
 
 
 @lru_cache(maxsize=1)

@@ -12,7 +12,7 @@ import numpy as np
 
 from clearfast_gis.detection import classify
 from clearfast_gis.detection.curve import match_curves, mine_curve_level, mine_curve_match
-from clearfast_gis.detection.features import AnomalyFeatures
+from clearfast_gis.detection.features import AnomalyFeatures, found_by
 from clearfast_gis.detection.markers import MarkerMatch
 from clearfast_gis.solar import mean_solar_hour
 from clearfast_gis.thermal import Inversion
@@ -111,6 +111,7 @@ def suspect_records(anomalies: AnomalySet, times_s: np.ndarray, longitude_deg: f
             "status": inv.status if inv else "not_characterised",
             "fit_status": (inv.fit_status or inv.status) if inv else "not_characterised",
             "polarity": _daytime_sign(f.polarity, day, f.contrast_k),
+            "found_by": found_by(f),
             "diurnal_behaviour": f.polarity, "class_cue": cue, "cue_confidence": float(conf),
             "n_scans": int(f.n_scans), "contrast_day_k": day, "contrast_night_k": night,
             "mine_curve_r": round(match, 3) if math.isfinite(match) else None,

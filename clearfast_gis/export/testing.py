@@ -16,6 +16,7 @@ import numpy as np
 from affine import Affine
 
 from clearfast_gis import __version__
+from clearfast_gis.detection.features import FOUND_BY_SCANS
 from clearfast_gis.export.cog import band_description, write_cog
 from clearfast_gis.export.geopackage import write_geopackage
 from clearfast_gis.export.layout import mosaic_name
@@ -169,6 +170,7 @@ def make_demo_products(root: str | os.PathLike, n_scans: int = 4, pixel_size_m: 
             "n_scans": n_scans, "contrast_day_k": day, "contrast_night_k": night,
             "fix_quality": obj.fix_quality, "figure": figure,
             "contrast_series": contrast_series_text([s["time_utc"] for s in scans], contrast),
+            "found_by": FOUND_BY_SCANS,
         })
         if figures:
             _contrast_figure(root / figure, [(t - start_s) / 3600.0 for t in times_s],

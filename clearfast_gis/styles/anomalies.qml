@@ -1,91 +1,91 @@
 <!DOCTYPE qgis PUBLIC 'http://mrcc.com/qgis.dtd' 'SYSTEM'>
-<qgis minScale="100000000" labelsEnabled="0" version="3.22.16-Białowieża" maxScale="0" simplifyLocal="1" styleCategories="Symbology|Labeling|Fields|Forms|MapTips|AttributeTable|Rendering" simplifyDrawingTol="1" simplifyDrawingHints="1" simplifyAlgorithm="0" simplifyMaxScale="1" hasScaleBasedVisibilityFlag="0" symbologyReferenceScale="-1">
-  <renderer-v2 symbollevels="0" type="categorizedSymbol" referencescale="-1" forceraster="0" attr="polarity" enableorderby="0">
+<qgis version="3.22.16-Białowieża" simplifyDrawingTol="1" simplifyLocal="1" minScale="100000000" simplifyDrawingHints="1" symbologyReferenceScale="-1" styleCategories="Symbology|Labeling|Fields|Forms|MapTips|AttributeTable|Rendering" maxScale="0" labelsEnabled="0" hasScaleBasedVisibilityFlag="0" simplifyMaxScale="1" simplifyAlgorithm="0">
+  <renderer-v2 enableorderby="0" referencescale="-1" symbollevels="0" forceraster="0" type="categorizedSymbol" attr="polarity">
     <categories>
-      <category label="Warm by day" value="hot" render="true" symbol="0"/>
-      <category label="Cool by day" value="cold" render="true" symbol="1"/>
+      <category render="true" symbol="0" label="Warm by day" value="hot"/>
+      <category render="true" symbol="1" label="Cool by day" value="cold"/>
     </categories>
     <symbols>
-      <symbol type="fill" alpha="1" name="0" force_rhr="0" clip_to_extent="1">
+      <symbol alpha="1" clip_to_extent="1" type="fill" name="0" force_rhr="0">
         <data_defined_properties>
           <Option type="Map">
-            <Option value="" type="QString" name="name"/>
+            <Option type="QString" name="name" value=""/>
             <Option name="properties"/>
-            <Option value="collection" type="QString" name="type"/>
+            <Option type="QString" name="type" value="collection"/>
           </Option>
         </data_defined_properties>
-        <layer enabled="1" class="SimpleFill" pass="0" locked="0">
+        <layer class="SimpleFill" pass="0" enabled="1" locked="0">
           <Option type="Map">
-            <Option value="3x:0,0,0,0,0,0" type="QString" name="border_width_map_unit_scale"/>
-            <Option value="0,0,0,0" type="QString" name="color"/>
-            <Option value="bevel" type="QString" name="joinstyle"/>
-            <Option value="0,0" type="QString" name="offset"/>
-            <Option value="3x:0,0,0,0,0,0" type="QString" name="offset_map_unit_scale"/>
-            <Option value="MM" type="QString" name="offset_unit"/>
-            <Option value="215,48,39,255" type="QString" name="outline_color"/>
-            <Option value="solid" type="QString" name="outline_style"/>
-            <Option value="0.5" type="QString" name="outline_width"/>
-            <Option value="MM" type="QString" name="outline_width_unit"/>
-            <Option value="no" type="QString" name="style"/>
+            <Option type="QString" name="border_width_map_unit_scale" value="3x:0,0,0,0,0,0"/>
+            <Option type="QString" name="color" value="0,0,0,0"/>
+            <Option type="QString" name="joinstyle" value="bevel"/>
+            <Option type="QString" name="offset" value="0,0"/>
+            <Option type="QString" name="offset_map_unit_scale" value="3x:0,0,0,0,0,0"/>
+            <Option type="QString" name="offset_unit" value="MM"/>
+            <Option type="QString" name="outline_color" value="215,48,39,255"/>
+            <Option type="QString" name="outline_style" value="solid"/>
+            <Option type="QString" name="outline_width" value="0.5"/>
+            <Option type="QString" name="outline_width_unit" value="MM"/>
+            <Option type="QString" name="style" value="no"/>
           </Option>
-          <prop k="border_width_map_unit_scale" v="3x:0,0,0,0,0,0"/>
-          <prop k="color" v="0,0,0,0"/>
-          <prop k="joinstyle" v="bevel"/>
-          <prop k="offset" v="0,0"/>
-          <prop k="offset_map_unit_scale" v="3x:0,0,0,0,0,0"/>
-          <prop k="offset_unit" v="MM"/>
-          <prop k="outline_color" v="215,48,39,255"/>
-          <prop k="outline_style" v="solid"/>
-          <prop k="outline_width" v="0.5"/>
-          <prop k="outline_width_unit" v="MM"/>
-          <prop k="style" v="no"/>
+          <prop v="3x:0,0,0,0,0,0" k="border_width_map_unit_scale"/>
+          <prop v="0,0,0,0" k="color"/>
+          <prop v="bevel" k="joinstyle"/>
+          <prop v="0,0" k="offset"/>
+          <prop v="3x:0,0,0,0,0,0" k="offset_map_unit_scale"/>
+          <prop v="MM" k="offset_unit"/>
+          <prop v="215,48,39,255" k="outline_color"/>
+          <prop v="solid" k="outline_style"/>
+          <prop v="0.5" k="outline_width"/>
+          <prop v="MM" k="outline_width_unit"/>
+          <prop v="no" k="style"/>
           <data_defined_properties>
             <Option type="Map">
-              <Option value="" type="QString" name="name"/>
+              <Option type="QString" name="name" value=""/>
               <Option name="properties"/>
-              <Option value="collection" type="QString" name="type"/>
+              <Option type="QString" name="type" value="collection"/>
             </Option>
           </data_defined_properties>
         </layer>
       </symbol>
-      <symbol type="fill" alpha="1" name="1" force_rhr="0" clip_to_extent="1">
+      <symbol alpha="1" clip_to_extent="1" type="fill" name="1" force_rhr="0">
         <data_defined_properties>
           <Option type="Map">
-            <Option value="" type="QString" name="name"/>
+            <Option type="QString" name="name" value=""/>
             <Option name="properties"/>
-            <Option value="collection" type="QString" name="type"/>
+            <Option type="QString" name="type" value="collection"/>
           </Option>
         </data_defined_properties>
-        <layer enabled="1" class="SimpleFill" pass="0" locked="0">
+        <layer class="SimpleFill" pass="0" enabled="1" locked="0">
           <Option type="Map">
-            <Option value="3x:0,0,0,0,0,0" type="QString" name="border_width_map_unit_scale"/>
-            <Option value="0,0,0,0" type="QString" name="color"/>
-            <Option value="bevel" type="QString" name="joinstyle"/>
-            <Option value="0,0" type="QString" name="offset"/>
-            <Option value="3x:0,0,0,0,0,0" type="QString" name="offset_map_unit_scale"/>
-            <Option value="MM" type="QString" name="offset_unit"/>
-            <Option value="69,117,180,255" type="QString" name="outline_color"/>
-            <Option value="solid" type="QString" name="outline_style"/>
-            <Option value="0.5" type="QString" name="outline_width"/>
-            <Option value="MM" type="QString" name="outline_width_unit"/>
-            <Option value="no" type="QString" name="style"/>
+            <Option type="QString" name="border_width_map_unit_scale" value="3x:0,0,0,0,0,0"/>
+            <Option type="QString" name="color" value="0,0,0,0"/>
+            <Option type="QString" name="joinstyle" value="bevel"/>
+            <Option type="QString" name="offset" value="0,0"/>
+            <Option type="QString" name="offset_map_unit_scale" value="3x:0,0,0,0,0,0"/>
+            <Option type="QString" name="offset_unit" value="MM"/>
+            <Option type="QString" name="outline_color" value="69,117,180,255"/>
+            <Option type="QString" name="outline_style" value="solid"/>
+            <Option type="QString" name="outline_width" value="0.5"/>
+            <Option type="QString" name="outline_width_unit" value="MM"/>
+            <Option type="QString" name="style" value="no"/>
           </Option>
-          <prop k="border_width_map_unit_scale" v="3x:0,0,0,0,0,0"/>
-          <prop k="color" v="0,0,0,0"/>
-          <prop k="joinstyle" v="bevel"/>
-          <prop k="offset" v="0,0"/>
-          <prop k="offset_map_unit_scale" v="3x:0,0,0,0,0,0"/>
-          <prop k="offset_unit" v="MM"/>
-          <prop k="outline_color" v="69,117,180,255"/>
-          <prop k="outline_style" v="solid"/>
-          <prop k="outline_width" v="0.5"/>
-          <prop k="outline_width_unit" v="MM"/>
-          <prop k="style" v="no"/>
+          <prop v="3x:0,0,0,0,0,0" k="border_width_map_unit_scale"/>
+          <prop v="0,0,0,0" k="color"/>
+          <prop v="bevel" k="joinstyle"/>
+          <prop v="0,0" k="offset"/>
+          <prop v="3x:0,0,0,0,0,0" k="offset_map_unit_scale"/>
+          <prop v="MM" k="offset_unit"/>
+          <prop v="69,117,180,255" k="outline_color"/>
+          <prop v="solid" k="outline_style"/>
+          <prop v="0.5" k="outline_width"/>
+          <prop v="MM" k="outline_width_unit"/>
+          <prop v="no" k="style"/>
           <data_defined_properties>
             <Option type="Map">
-              <Option value="" type="QString" name="name"/>
+              <Option type="QString" name="name" value=""/>
               <Option name="properties"/>
-              <Option value="collection" type="QString" name="type"/>
+              <Option type="QString" name="type" value="collection"/>
             </Option>
           </data_defined_properties>
         </layer>
@@ -102,8 +102,8 @@
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option value="false" type="bool" name="IsMultiline"/>
-            <Option value="false" type="bool" name="UseHtml"/>
+            <Option type="bool" name="IsMultiline" value="false"/>
+            <Option type="bool" name="UseHtml" value="false"/>
           </Option>
         </config>
       </editWidget>
@@ -112,12 +112,12 @@
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option value="true" type="bool" name="AllowNull"/>
-            <Option value="1e+09" type="double" name="Max"/>
-            <Option value="-1e+09" type="double" name="Min"/>
-            <Option value="2" type="int" name="Precision"/>
-            <Option value="1" type="int" name="Step"/>
-            <Option value="SpinBox" type="QString" name="Style"/>
+            <Option type="bool" name="AllowNull" value="true"/>
+            <Option type="double" name="Max" value="1e+09"/>
+            <Option type="double" name="Min" value="-1e+09"/>
+            <Option type="int" name="Precision" value="2"/>
+            <Option type="int" name="Step" value="1"/>
+            <Option type="QString" name="Style" value="SpinBox"/>
           </Option>
         </config>
       </editWidget>
@@ -126,12 +126,12 @@
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option value="true" type="bool" name="AllowNull"/>
-            <Option value="1e+09" type="double" name="Max"/>
-            <Option value="-1e+09" type="double" name="Min"/>
-            <Option value="2" type="int" name="Precision"/>
-            <Option value="1" type="int" name="Step"/>
-            <Option value="SpinBox" type="QString" name="Style"/>
+            <Option type="bool" name="AllowNull" value="true"/>
+            <Option type="double" name="Max" value="1e+09"/>
+            <Option type="double" name="Min" value="-1e+09"/>
+            <Option type="int" name="Precision" value="2"/>
+            <Option type="int" name="Step" value="1"/>
+            <Option type="QString" name="Style" value="SpinBox"/>
           </Option>
         </config>
       </editWidget>
@@ -140,12 +140,12 @@
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option value="true" type="bool" name="AllowNull"/>
-            <Option value="1e+09" type="double" name="Max"/>
-            <Option value="-1e+09" type="double" name="Min"/>
-            <Option value="7" type="int" name="Precision"/>
-            <Option value="1" type="int" name="Step"/>
-            <Option value="SpinBox" type="QString" name="Style"/>
+            <Option type="bool" name="AllowNull" value="true"/>
+            <Option type="double" name="Max" value="1e+09"/>
+            <Option type="double" name="Min" value="-1e+09"/>
+            <Option type="int" name="Precision" value="7"/>
+            <Option type="int" name="Step" value="1"/>
+            <Option type="QString" name="Style" value="SpinBox"/>
           </Option>
         </config>
       </editWidget>
@@ -154,12 +154,12 @@
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option value="true" type="bool" name="AllowNull"/>
-            <Option value="1e+09" type="double" name="Max"/>
-            <Option value="-1e+09" type="double" name="Min"/>
-            <Option value="7" type="int" name="Precision"/>
-            <Option value="1" type="int" name="Step"/>
-            <Option value="SpinBox" type="QString" name="Style"/>
+            <Option type="bool" name="AllowNull" value="true"/>
+            <Option type="double" name="Max" value="1e+09"/>
+            <Option type="double" name="Min" value="-1e+09"/>
+            <Option type="int" name="Precision" value="7"/>
+            <Option type="int" name="Step" value="1"/>
+            <Option type="QString" name="Style" value="SpinBox"/>
           </Option>
         </config>
       </editWidget>
@@ -168,12 +168,12 @@
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option value="true" type="bool" name="AllowNull"/>
-            <Option value="1e+09" type="double" name="Max"/>
-            <Option value="-1e+09" type="double" name="Min"/>
-            <Option value="3" type="int" name="Precision"/>
-            <Option value="1" type="int" name="Step"/>
-            <Option value="SpinBox" type="QString" name="Style"/>
+            <Option type="bool" name="AllowNull" value="true"/>
+            <Option type="double" name="Max" value="1e+09"/>
+            <Option type="double" name="Min" value="-1e+09"/>
+            <Option type="int" name="Precision" value="3"/>
+            <Option type="int" name="Step" value="1"/>
+            <Option type="QString" name="Style" value="SpinBox"/>
           </Option>
         </config>
       </editWidget>
@@ -182,12 +182,12 @@
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option value="true" type="bool" name="AllowNull"/>
-            <Option value="1e+09" type="double" name="Max"/>
-            <Option value="-1e+09" type="double" name="Min"/>
-            <Option value="2" type="int" name="Precision"/>
-            <Option value="1" type="int" name="Step"/>
-            <Option value="SpinBox" type="QString" name="Style"/>
+            <Option type="bool" name="AllowNull" value="true"/>
+            <Option type="double" name="Max" value="1e+09"/>
+            <Option type="double" name="Min" value="-1e+09"/>
+            <Option type="int" name="Precision" value="2"/>
+            <Option type="int" name="Step" value="1"/>
+            <Option type="QString" name="Style" value="SpinBox"/>
           </Option>
         </config>
       </editWidget>
@@ -196,12 +196,12 @@
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option value="true" type="bool" name="AllowNull"/>
-            <Option value="1e+09" type="double" name="Max"/>
-            <Option value="-1e+09" type="double" name="Min"/>
-            <Option value="2" type="int" name="Precision"/>
-            <Option value="1" type="int" name="Step"/>
-            <Option value="SpinBox" type="QString" name="Style"/>
+            <Option type="bool" name="AllowNull" value="true"/>
+            <Option type="double" name="Max" value="1e+09"/>
+            <Option type="double" name="Min" value="-1e+09"/>
+            <Option type="int" name="Precision" value="2"/>
+            <Option type="int" name="Step" value="1"/>
+            <Option type="QString" name="Style" value="SpinBox"/>
           </Option>
         </config>
       </editWidget>
@@ -210,12 +210,12 @@
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option value="true" type="bool" name="AllowNull"/>
-            <Option value="1e+09" type="double" name="Max"/>
-            <Option value="-1e+09" type="double" name="Min"/>
-            <Option value="3" type="int" name="Precision"/>
-            <Option value="1" type="int" name="Step"/>
-            <Option value="SpinBox" type="QString" name="Style"/>
+            <Option type="bool" name="AllowNull" value="true"/>
+            <Option type="double" name="Max" value="1e+09"/>
+            <Option type="double" name="Min" value="-1e+09"/>
+            <Option type="int" name="Precision" value="3"/>
+            <Option type="int" name="Step" value="1"/>
+            <Option type="QString" name="Style" value="SpinBox"/>
           </Option>
         </config>
       </editWidget>
@@ -224,12 +224,12 @@
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option value="true" type="bool" name="AllowNull"/>
-            <Option value="1e+09" type="double" name="Max"/>
-            <Option value="-1e+09" type="double" name="Min"/>
-            <Option value="3" type="int" name="Precision"/>
-            <Option value="1" type="int" name="Step"/>
-            <Option value="SpinBox" type="QString" name="Style"/>
+            <Option type="bool" name="AllowNull" value="true"/>
+            <Option type="double" name="Max" value="1e+09"/>
+            <Option type="double" name="Min" value="-1e+09"/>
+            <Option type="int" name="Precision" value="3"/>
+            <Option type="int" name="Step" value="1"/>
+            <Option type="QString" name="Style" value="SpinBox"/>
           </Option>
         </config>
       </editWidget>
@@ -238,8 +238,8 @@
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option value="false" type="bool" name="IsMultiline"/>
-            <Option value="false" type="bool" name="UseHtml"/>
+            <Option type="bool" name="IsMultiline" value="false"/>
+            <Option type="bool" name="UseHtml" value="false"/>
           </Option>
         </config>
       </editWidget>
@@ -248,8 +248,8 @@
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option value="false" type="bool" name="IsMultiline"/>
-            <Option value="false" type="bool" name="UseHtml"/>
+            <Option type="bool" name="IsMultiline" value="false"/>
+            <Option type="bool" name="UseHtml" value="false"/>
           </Option>
         </config>
       </editWidget>
@@ -258,8 +258,8 @@
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option value="false" type="bool" name="IsMultiline"/>
-            <Option value="false" type="bool" name="UseHtml"/>
+            <Option type="bool" name="IsMultiline" value="false"/>
+            <Option type="bool" name="UseHtml" value="false"/>
           </Option>
         </config>
       </editWidget>
@@ -268,8 +268,8 @@
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option value="false" type="bool" name="IsMultiline"/>
-            <Option value="false" type="bool" name="UseHtml"/>
+            <Option type="bool" name="IsMultiline" value="false"/>
+            <Option type="bool" name="UseHtml" value="false"/>
           </Option>
         </config>
       </editWidget>
@@ -278,8 +278,8 @@
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option value="false" type="bool" name="IsMultiline"/>
-            <Option value="false" type="bool" name="UseHtml"/>
+            <Option type="bool" name="IsMultiline" value="false"/>
+            <Option type="bool" name="UseHtml" value="false"/>
           </Option>
         </config>
       </editWidget>
@@ -288,12 +288,12 @@
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option value="true" type="bool" name="AllowNull"/>
-            <Option value="1e+09" type="double" name="Max"/>
-            <Option value="-1e+09" type="double" name="Min"/>
-            <Option value="2" type="int" name="Precision"/>
-            <Option value="1" type="int" name="Step"/>
-            <Option value="SpinBox" type="QString" name="Style"/>
+            <Option type="bool" name="AllowNull" value="true"/>
+            <Option type="double" name="Max" value="1e+09"/>
+            <Option type="double" name="Min" value="-1e+09"/>
+            <Option type="int" name="Precision" value="2"/>
+            <Option type="int" name="Step" value="1"/>
+            <Option type="QString" name="Style" value="SpinBox"/>
           </Option>
         </config>
       </editWidget>
@@ -302,12 +302,12 @@
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option value="true" type="bool" name="AllowNull"/>
-            <Option value="1e+09" type="double" name="Max"/>
-            <Option value="-1e+09" type="double" name="Min"/>
-            <Option value="2" type="int" name="Precision"/>
-            <Option value="1" type="int" name="Step"/>
-            <Option value="SpinBox" type="QString" name="Style"/>
+            <Option type="bool" name="AllowNull" value="true"/>
+            <Option type="double" name="Max" value="1e+09"/>
+            <Option type="double" name="Min" value="-1e+09"/>
+            <Option type="int" name="Precision" value="2"/>
+            <Option type="int" name="Step" value="1"/>
+            <Option type="QString" name="Style" value="SpinBox"/>
           </Option>
         </config>
       </editWidget>
@@ -316,8 +316,8 @@
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option value="false" type="bool" name="IsMultiline"/>
-            <Option value="false" type="bool" name="UseHtml"/>
+            <Option type="bool" name="IsMultiline" value="false"/>
+            <Option type="bool" name="UseHtml" value="false"/>
           </Option>
         </config>
       </editWidget>
@@ -326,8 +326,8 @@
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option value="false" type="bool" name="IsMultiline"/>
-            <Option value="false" type="bool" name="UseHtml"/>
+            <Option type="bool" name="IsMultiline" value="false"/>
+            <Option type="bool" name="UseHtml" value="false"/>
           </Option>
         </config>
       </editWidget>
@@ -336,8 +336,8 @@
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option value="false" type="bool" name="IsMultiline"/>
-            <Option value="false" type="bool" name="UseHtml"/>
+            <Option type="bool" name="IsMultiline" value="false"/>
+            <Option type="bool" name="UseHtml" value="false"/>
           </Option>
         </config>
       </editWidget>
@@ -346,12 +346,12 @@
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option value="true" type="bool" name="AllowNull"/>
-            <Option value="1e+09" type="double" name="Max"/>
-            <Option value="-1e+09" type="double" name="Min"/>
-            <Option value="2" type="int" name="Precision"/>
-            <Option value="1" type="int" name="Step"/>
-            <Option value="SpinBox" type="QString" name="Style"/>
+            <Option type="bool" name="AllowNull" value="true"/>
+            <Option type="double" name="Max" value="1e+09"/>
+            <Option type="double" name="Min" value="-1e+09"/>
+            <Option type="int" name="Precision" value="2"/>
+            <Option type="int" name="Step" value="1"/>
+            <Option type="QString" name="Style" value="SpinBox"/>
           </Option>
         </config>
       </editWidget>
@@ -360,12 +360,12 @@
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option value="true" type="bool" name="AllowNull"/>
-            <Option value="1e+09" type="double" name="Max"/>
-            <Option value="-1e+09" type="double" name="Min"/>
-            <Option value="2" type="int" name="Precision"/>
-            <Option value="1" type="int" name="Step"/>
-            <Option value="SpinBox" type="QString" name="Style"/>
+            <Option type="bool" name="AllowNull" value="true"/>
+            <Option type="double" name="Max" value="1e+09"/>
+            <Option type="double" name="Min" value="-1e+09"/>
+            <Option type="int" name="Precision" value="2"/>
+            <Option type="int" name="Step" value="1"/>
+            <Option type="QString" name="Style" value="SpinBox"/>
           </Option>
         </config>
       </editWidget>
@@ -374,12 +374,12 @@
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option value="true" type="bool" name="AllowNull"/>
-            <Option value="1e+09" type="double" name="Max"/>
-            <Option value="-1e+09" type="double" name="Min"/>
-            <Option value="2" type="int" name="Precision"/>
-            <Option value="1" type="int" name="Step"/>
-            <Option value="SpinBox" type="QString" name="Style"/>
+            <Option type="bool" name="AllowNull" value="true"/>
+            <Option type="double" name="Max" value="1e+09"/>
+            <Option type="double" name="Min" value="-1e+09"/>
+            <Option type="int" name="Precision" value="2"/>
+            <Option type="int" name="Step" value="1"/>
+            <Option type="QString" name="Style" value="SpinBox"/>
           </Option>
         </config>
       </editWidget>
@@ -388,12 +388,12 @@
       <editWidget type="Range">
         <config>
           <Option type="Map">
-            <Option value="true" type="bool" name="AllowNull"/>
-            <Option value="1e+09" type="double" name="Max"/>
-            <Option value="-1e+09" type="double" name="Min"/>
-            <Option value="2" type="int" name="Precision"/>
-            <Option value="1" type="int" name="Step"/>
-            <Option value="SpinBox" type="QString" name="Style"/>
+            <Option type="bool" name="AllowNull" value="true"/>
+            <Option type="double" name="Max" value="1e+09"/>
+            <Option type="double" name="Min" value="-1e+09"/>
+            <Option type="int" name="Precision" value="2"/>
+            <Option type="int" name="Step" value="1"/>
+            <Option type="QString" name="Style" value="SpinBox"/>
           </Option>
         </config>
       </editWidget>
@@ -402,8 +402,8 @@
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option value="false" type="bool" name="IsMultiline"/>
-            <Option value="false" type="bool" name="UseHtml"/>
+            <Option type="bool" name="IsMultiline" value="false"/>
+            <Option type="bool" name="UseHtml" value="false"/>
           </Option>
         </config>
       </editWidget>
@@ -419,8 +419,18 @@
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option value="false" type="bool" name="IsMultiline"/>
-            <Option value="false" type="bool" name="UseHtml"/>
+            <Option type="bool" name="IsMultiline" value="false"/>
+            <Option type="bool" name="UseHtml" value="false"/>
+          </Option>
+        </config>
+      </editWidget>
+    </field>
+    <field name="found_by" configurationFlags="None">
+      <editWidget type="TextEdit">
+        <config>
+          <Option type="Map">
+            <Option type="bool" name="IsMultiline" value="false"/>
+            <Option type="bool" name="UseHtml" value="false"/>
           </Option>
         </config>
       </editWidget>
@@ -429,8 +439,8 @@
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option value="false" type="bool" name="IsMultiline"/>
-            <Option value="false" type="bool" name="UseHtml"/>
+            <Option type="bool" name="IsMultiline" value="false"/>
+            <Option type="bool" name="UseHtml" value="false"/>
           </Option>
         </config>
       </editWidget>
@@ -439,8 +449,8 @@
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option value="false" type="bool" name="IsMultiline"/>
-            <Option value="false" type="bool" name="UseHtml"/>
+            <Option type="bool" name="IsMultiline" value="false"/>
+            <Option type="bool" name="UseHtml" value="false"/>
           </Option>
         </config>
       </editWidget>
@@ -449,8 +459,8 @@
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option value="false" type="bool" name="IsMultiline"/>
-            <Option value="false" type="bool" name="UseHtml"/>
+            <Option type="bool" name="IsMultiline" value="false"/>
+            <Option type="bool" name="UseHtml" value="false"/>
           </Option>
         </config>
       </editWidget>
@@ -459,8 +469,8 @@
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option value="false" type="bool" name="IsMultiline"/>
-            <Option value="false" type="bool" name="UseHtml"/>
+            <Option type="bool" name="IsMultiline" value="false"/>
+            <Option type="bool" name="UseHtml" value="false"/>
           </Option>
         </config>
       </editWidget>
@@ -469,46 +479,47 @@
       <editWidget type="TextEdit">
         <config>
           <Option type="Map">
-            <Option value="false" type="bool" name="IsMultiline"/>
-            <Option value="false" type="bool" name="UseHtml"/>
+            <Option type="bool" name="IsMultiline" value="false"/>
+            <Option type="bool" name="UseHtml" value="false"/>
           </Option>
         </config>
       </editWidget>
     </field>
   </fieldConfiguration>
   <aliases>
-    <alias field="anomaly_id" index="0" name="Suspect id"/>
-    <alias field="x" index="1" name="Easting (m, survey UTM)"/>
-    <alias field="y" index="2" name="Northing (m, survey UTM)"/>
-    <alias field="lat" index="3" name="Latitude (°, WGS84)"/>
-    <alias field="lon" index="4" name="Longitude (°, WGS84)"/>
-    <alias field="area_m2" index="5" name="Area (m²)"/>
-    <alias field="diameter_m" index="6" name="Diameter (m)"/>
-    <alias field="circularity" index="7" name="Circularity (0-1)"/>
-    <alias field="depth_m" index="8" name="Burial depth (m)"/>
-    <alias field="depth_sigma_m" index="9" name="Depth uncertainty, 1σ (m)"/>
-    <alias field="diffusivity_m2s" index="10" name="Thermal diffusivity (m²/s)"/>
-    <alias field="diffusivity_sigma_m2s" index="11" name="Diffusivity uncertainty, 1σ (m²/s)"/>
-    <alias field="status" index="12" name="Characterisation status"/>
-    <alias field="polarity" index="13" name="Polarity"/>
-    <alias field="class_cue" index="14" name="Class cue"/>
-    <alias field="cue_confidence" index="15" name="Class cue confidence (0-1)"/>
-    <alias field="p_mine" index="16" name="Mine likelihood (0-1)"/>
-    <alias field="priority" index="17" name="Priority (1 = first)"/>
-    <alias field="set_aside_reason" index="18" name="Set aside because"/>
-    <alias field="n_scans" index="19" name="Scans seen"/>
-    <alias field="contrast_day_k" index="20" name="Day contrast (K)"/>
-    <alias field="contrast_night_k" index="21" name="Night contrast (K)"/>
-    <alias field="mine_curve_r" index="22" name="Match with a mine's diurnal curve (-1 to 1)"/>
-    <alias field="mine_curve_level" index="23" name="Offset from a mine's diurnal curve (swings)"/>
-    <alias field="fix_quality" index="24" name="GNSS fix quality"/>
-    <alias field="figure" index="25" name="Contrast curve"/>
-    <alias field="contrast_series" index="26" name="Contrast series (JSON)"/>
-    <alias field="short_id" index="27" name="Short id"/>
-    <alias field="depth" index="28" name="Burial depth ± 1σ"/>
-    <alias field="diffusivity" index="29" name="Thermal diffusivity ± 1σ"/>
-    <alias field="likelihood" index="30" name="Mine likelihood"/>
-    <alias field="cue_confidence_pct" index="31" name="Class cue confidence"/>
+    <alias field="anomaly_id" name="Suspect id" index="0"/>
+    <alias field="x" name="Easting (m, survey UTM)" index="1"/>
+    <alias field="y" name="Northing (m, survey UTM)" index="2"/>
+    <alias field="lat" name="Latitude (°, WGS84)" index="3"/>
+    <alias field="lon" name="Longitude (°, WGS84)" index="4"/>
+    <alias field="area_m2" name="Area (m²)" index="5"/>
+    <alias field="diameter_m" name="Diameter (m)" index="6"/>
+    <alias field="circularity" name="Circularity (0-1)" index="7"/>
+    <alias field="depth_m" name="Burial depth (m)" index="8"/>
+    <alias field="depth_sigma_m" name="Depth uncertainty, 1σ (m)" index="9"/>
+    <alias field="diffusivity_m2s" name="Thermal diffusivity (m²/s)" index="10"/>
+    <alias field="diffusivity_sigma_m2s" name="Diffusivity uncertainty, 1σ (m²/s)" index="11"/>
+    <alias field="status" name="Characterisation status" index="12"/>
+    <alias field="polarity" name="Polarity" index="13"/>
+    <alias field="class_cue" name="Class cue" index="14"/>
+    <alias field="cue_confidence" name="Class cue confidence (0-1)" index="15"/>
+    <alias field="p_mine" name="Mine likelihood (0-1)" index="16"/>
+    <alias field="priority" name="Priority (1 = first)" index="17"/>
+    <alias field="set_aside_reason" name="Set aside because" index="18"/>
+    <alias field="n_scans" name="Scans seen" index="19"/>
+    <alias field="contrast_day_k" name="Day contrast (K)" index="20"/>
+    <alias field="contrast_night_k" name="Night contrast (K)" index="21"/>
+    <alias field="mine_curve_r" name="Match with a mine's diurnal curve (-1 to 1)" index="22"/>
+    <alias field="mine_curve_level" name="Offset from a mine's diurnal curve (swings)" index="23"/>
+    <alias field="fix_quality" name="GNSS fix quality" index="24"/>
+    <alias field="figure" name="Contrast curve" index="25"/>
+    <alias field="contrast_series" name="Contrast series (JSON)" index="26"/>
+    <alias field="found_by" name="Found by (scans / stack)" index="27"/>
+    <alias field="short_id" name="Short id" index="28"/>
+    <alias field="depth" name="Burial depth ± 1σ" index="29"/>
+    <alias field="diffusivity" name="Thermal diffusivity ± 1σ" index="30"/>
+    <alias field="likelihood" name="Mine likelihood" index="31"/>
+    <alias field="cue_confidence_pct" name="Class cue confidence" index="32"/>
   </aliases>
   <defaults>
     <default field="anomaly_id" applyOnUpdate="0" expression=""/>
@@ -538,6 +549,7 @@
     <default field="fix_quality" applyOnUpdate="0" expression=""/>
     <default field="figure" applyOnUpdate="0" expression=""/>
     <default field="contrast_series" applyOnUpdate="0" expression=""/>
+    <default field="found_by" applyOnUpdate="0" expression=""/>
     <default field="short_id" applyOnUpdate="0" expression=""/>
     <default field="depth" applyOnUpdate="0" expression=""/>
     <default field="diffusivity" applyOnUpdate="0" expression=""/>
@@ -545,120 +557,132 @@
     <default field="cue_confidence_pct" applyOnUpdate="0" expression=""/>
   </defaults>
   <constraints>
-    <constraint field="anomaly_id" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
-    <constraint field="x" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
-    <constraint field="y" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
-    <constraint field="lat" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
-    <constraint field="lon" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
-    <constraint field="area_m2" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
-    <constraint field="diameter_m" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
-    <constraint field="circularity" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
-    <constraint field="depth_m" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
-    <constraint field="depth_sigma_m" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
-    <constraint field="diffusivity_m2s" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
-    <constraint field="diffusivity_sigma_m2s" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
-    <constraint field="status" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
-    <constraint field="polarity" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
-    <constraint field="class_cue" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
-    <constraint field="cue_confidence" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
-    <constraint field="p_mine" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
-    <constraint field="priority" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
-    <constraint field="set_aside_reason" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
-    <constraint field="n_scans" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
-    <constraint field="contrast_day_k" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
-    <constraint field="contrast_night_k" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
-    <constraint field="mine_curve_r" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
-    <constraint field="mine_curve_level" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
-    <constraint field="fix_quality" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
-    <constraint field="figure" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
-    <constraint field="contrast_series" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
-    <constraint field="short_id" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
-    <constraint field="depth" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
-    <constraint field="diffusivity" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
-    <constraint field="likelihood" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
-    <constraint field="cue_confidence_pct" exp_strength="0" constraints="0" notnull_strength="0" unique_strength="0"/>
+    <constraint field="anomaly_id" exp_strength="0" unique_strength="0" notnull_strength="0" constraints="0"/>
+    <constraint field="x" exp_strength="0" unique_strength="0" notnull_strength="0" constraints="0"/>
+    <constraint field="y" exp_strength="0" unique_strength="0" notnull_strength="0" constraints="0"/>
+    <constraint field="lat" exp_strength="0" unique_strength="0" notnull_strength="0" constraints="0"/>
+    <constraint field="lon" exp_strength="0" unique_strength="0" notnull_strength="0" constraints="0"/>
+    <constraint field="area_m2" exp_strength="0" unique_strength="0" notnull_strength="0" constraints="0"/>
+    <constraint field="diameter_m" exp_strength="0" unique_strength="0" notnull_strength="0" constraints="0"/>
+    <constraint field="circularity" exp_strength="0" unique_strength="0" notnull_strength="0" constraints="0"/>
+    <constraint field="depth_m" exp_strength="0" unique_strength="0" notnull_strength="0" constraints="0"/>
+    <constraint field="depth_sigma_m" exp_strength="0" unique_strength="0" notnull_strength="0" constraints="0"/>
+    <constraint field="diffusivity_m2s" exp_strength="0" unique_strength="0" notnull_strength="0" constraints="0"/>
+    <constraint field="diffusivity_sigma_m2s" exp_strength="0" unique_strength="0" notnull_strength="0" constraints="0"/>
+    <constraint field="status" exp_strength="0" unique_strength="0" notnull_strength="0" constraints="0"/>
+    <constraint field="polarity" exp_strength="0" unique_strength="0" notnull_strength="0" constraints="0"/>
+    <constraint field="class_cue" exp_strength="0" unique_strength="0" notnull_strength="0" constraints="0"/>
+    <constraint field="cue_confidence" exp_strength="0" unique_strength="0" notnull_strength="0" constraints="0"/>
+    <constraint field="p_mine" exp_strength="0" unique_strength="0" notnull_strength="0" constraints="0"/>
+    <constraint field="priority" exp_strength="0" unique_strength="0" notnull_strength="0" constraints="0"/>
+    <constraint field="set_aside_reason" exp_strength="0" unique_strength="0" notnull_strength="0" constraints="0"/>
+    <constraint field="n_scans" exp_strength="0" unique_strength="0" notnull_strength="0" constraints="0"/>
+    <constraint field="contrast_day_k" exp_strength="0" unique_strength="0" notnull_strength="0" constraints="0"/>
+    <constraint field="contrast_night_k" exp_strength="0" unique_strength="0" notnull_strength="0" constraints="0"/>
+    <constraint field="mine_curve_r" exp_strength="0" unique_strength="0" notnull_strength="0" constraints="0"/>
+    <constraint field="mine_curve_level" exp_strength="0" unique_strength="0" notnull_strength="0" constraints="0"/>
+    <constraint field="fix_quality" exp_strength="0" unique_strength="0" notnull_strength="0" constraints="0"/>
+    <constraint field="figure" exp_strength="0" unique_strength="0" notnull_strength="0" constraints="0"/>
+    <constraint field="contrast_series" exp_strength="0" unique_strength="0" notnull_strength="0" constraints="0"/>
+    <constraint field="found_by" exp_strength="0" unique_strength="0" notnull_strength="0" constraints="0"/>
+    <constraint field="short_id" exp_strength="0" unique_strength="0" notnull_strength="0" constraints="0"/>
+    <constraint field="depth" exp_strength="0" unique_strength="0" notnull_strength="0" constraints="0"/>
+    <constraint field="diffusivity" exp_strength="0" unique_strength="0" notnull_strength="0" constraints="0"/>
+    <constraint field="likelihood" exp_strength="0" unique_strength="0" notnull_strength="0" constraints="0"/>
+    <constraint field="cue_confidence_pct" exp_strength="0" unique_strength="0" notnull_strength="0" constraints="0"/>
   </constraints>
   <constraintExpressions>
-    <constraint field="anomaly_id" desc="" exp=""/>
-    <constraint field="x" desc="" exp=""/>
-    <constraint field="y" desc="" exp=""/>
-    <constraint field="lat" desc="" exp=""/>
-    <constraint field="lon" desc="" exp=""/>
-    <constraint field="area_m2" desc="" exp=""/>
-    <constraint field="diameter_m" desc="" exp=""/>
-    <constraint field="circularity" desc="" exp=""/>
-    <constraint field="depth_m" desc="" exp=""/>
-    <constraint field="depth_sigma_m" desc="" exp=""/>
-    <constraint field="diffusivity_m2s" desc="" exp=""/>
-    <constraint field="diffusivity_sigma_m2s" desc="" exp=""/>
-    <constraint field="status" desc="" exp=""/>
-    <constraint field="polarity" desc="" exp=""/>
-    <constraint field="class_cue" desc="" exp=""/>
-    <constraint field="cue_confidence" desc="" exp=""/>
-    <constraint field="p_mine" desc="" exp=""/>
-    <constraint field="priority" desc="" exp=""/>
-    <constraint field="set_aside_reason" desc="" exp=""/>
-    <constraint field="n_scans" desc="" exp=""/>
-    <constraint field="contrast_day_k" desc="" exp=""/>
-    <constraint field="contrast_night_k" desc="" exp=""/>
-    <constraint field="mine_curve_r" desc="" exp=""/>
-    <constraint field="mine_curve_level" desc="" exp=""/>
-    <constraint field="fix_quality" desc="" exp=""/>
-    <constraint field="figure" desc="" exp=""/>
-    <constraint field="contrast_series" desc="" exp=""/>
-    <constraint field="short_id" desc="" exp=""/>
-    <constraint field="depth" desc="" exp=""/>
-    <constraint field="diffusivity" desc="" exp=""/>
-    <constraint field="likelihood" desc="" exp=""/>
-    <constraint field="cue_confidence_pct" desc="" exp=""/>
+    <constraint exp="" field="anomaly_id" desc=""/>
+    <constraint exp="" field="x" desc=""/>
+    <constraint exp="" field="y" desc=""/>
+    <constraint exp="" field="lat" desc=""/>
+    <constraint exp="" field="lon" desc=""/>
+    <constraint exp="" field="area_m2" desc=""/>
+    <constraint exp="" field="diameter_m" desc=""/>
+    <constraint exp="" field="circularity" desc=""/>
+    <constraint exp="" field="depth_m" desc=""/>
+    <constraint exp="" field="depth_sigma_m" desc=""/>
+    <constraint exp="" field="diffusivity_m2s" desc=""/>
+    <constraint exp="" field="diffusivity_sigma_m2s" desc=""/>
+    <constraint exp="" field="status" desc=""/>
+    <constraint exp="" field="polarity" desc=""/>
+    <constraint exp="" field="class_cue" desc=""/>
+    <constraint exp="" field="cue_confidence" desc=""/>
+    <constraint exp="" field="p_mine" desc=""/>
+    <constraint exp="" field="priority" desc=""/>
+    <constraint exp="" field="set_aside_reason" desc=""/>
+    <constraint exp="" field="n_scans" desc=""/>
+    <constraint exp="" field="contrast_day_k" desc=""/>
+    <constraint exp="" field="contrast_night_k" desc=""/>
+    <constraint exp="" field="mine_curve_r" desc=""/>
+    <constraint exp="" field="mine_curve_level" desc=""/>
+    <constraint exp="" field="fix_quality" desc=""/>
+    <constraint exp="" field="figure" desc=""/>
+    <constraint exp="" field="contrast_series" desc=""/>
+    <constraint exp="" field="found_by" desc=""/>
+    <constraint exp="" field="short_id" desc=""/>
+    <constraint exp="" field="depth" desc=""/>
+    <constraint exp="" field="diffusivity" desc=""/>
+    <constraint exp="" field="likelihood" desc=""/>
+    <constraint exp="" field="cue_confidence_pct" desc=""/>
   </constraintExpressions>
   <expressionfields>
-    <field type="10" typeName="" name="short_id" comment="" subType="0" precision="0" expression="'S-' || lpad(to_string(to_int(regexp_substr(&quot;anomaly_id&quot;, '(\\d+)$'))), 3, '0')" length="0"/>
-    <field type="10" typeName="" name="depth" comment="" subType="0" precision="0" expression="CASE WHEN &quot;depth_m&quot; * 100 IS NULL THEN 'not characterised' WHEN &quot;depth_sigma_m&quot; * 100 IS NULL THEN format_number(&quot;depth_m&quot; * 100, 1) || ' cm' ELSE format_number(&quot;depth_m&quot; * 100, 1) || ' ± ' || format_number(&quot;depth_sigma_m&quot; * 100, 1) || ' cm' END" length="0"/>
-    <field type="10" typeName="" name="diffusivity" comment="" subType="0" precision="0" expression="CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 IS NULL THEN 'not characterised' WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 IS NULL THEN CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' mm²/s' ELSE CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' ± ' || CASE WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_sigma_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6))))) END || ' mm²/s' END" length="0"/>
-    <field type="10" typeName="" name="likelihood" comment="" subType="0" precision="0" expression="CASE WHEN attribute('p_mine') IS NULL THEN 'not estimated' ELSE format_number(100 * attribute('p_mine'), 0) || ' %' END" length="0"/>
-    <field type="10" typeName="" name="cue_confidence_pct" comment="" subType="0" precision="0" expression="CASE WHEN coalesce(attribute('cue_confidence'), attribute('confidence')) IS NULL THEN NULL ELSE format_number(100 * coalesce(attribute('cue_confidence'), attribute('confidence')), 0) || ' %' END" length="0"/>
-    <field type="10" typeName="" name="short_id" comment="" subType="0" precision="0" expression="'S-' || lpad(to_string(to_int(regexp_substr(&quot;anomaly_id&quot;, '(\\d+)$'))), 3, '0')" length="0"/>
-    <field type="10" typeName="" name="depth" comment="" subType="0" precision="0" expression="CASE WHEN &quot;depth_m&quot; * 100 IS NULL THEN 'not characterised' WHEN &quot;depth_sigma_m&quot; * 100 IS NULL THEN format_number(&quot;depth_m&quot; * 100, 1) || ' cm' ELSE format_number(&quot;depth_m&quot; * 100, 1) || ' ± ' || format_number(&quot;depth_sigma_m&quot; * 100, 1) || ' cm' END" length="0"/>
-    <field type="10" typeName="" name="diffusivity" comment="" subType="0" precision="0" expression="CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 IS NULL THEN 'not characterised' WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 IS NULL THEN CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' mm²/s' ELSE CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' ± ' || CASE WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_sigma_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6))))) END || ' mm²/s' END" length="0"/>
-    <field type="10" typeName="" name="likelihood" comment="" subType="0" precision="0" expression="CASE WHEN attribute('p_mine') IS NULL THEN 'not estimated' ELSE format_number(100 * attribute('p_mine'), 0) || ' %' END" length="0"/>
-    <field type="10" typeName="" name="cue_confidence_pct" comment="" subType="0" precision="0" expression="CASE WHEN coalesce(attribute('cue_confidence'), attribute('confidence')) IS NULL THEN NULL ELSE format_number(100 * coalesce(attribute('cue_confidence'), attribute('confidence')), 0) || ' %' END" length="0"/>
-    <field type="10" typeName="" name="short_id" comment="" subType="0" precision="0" expression="'S-' || lpad(to_string(to_int(regexp_substr(&quot;anomaly_id&quot;, '(\\d+)$'))), 3, '0')" length="0"/>
-    <field type="10" typeName="" name="depth" comment="" subType="0" precision="0" expression="CASE WHEN &quot;depth_m&quot; * 100 IS NULL THEN 'not characterised' WHEN &quot;depth_sigma_m&quot; * 100 IS NULL THEN format_number(&quot;depth_m&quot; * 100, 1) || ' cm' ELSE format_number(&quot;depth_m&quot; * 100, 1) || ' ± ' || format_number(&quot;depth_sigma_m&quot; * 100, 1) || ' cm' END" length="0"/>
-    <field type="10" typeName="" name="diffusivity" comment="" subType="0" precision="0" expression="CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 IS NULL THEN 'not characterised' WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 IS NULL THEN CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' mm²/s' ELSE CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' ± ' || CASE WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_sigma_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6))))) END || ' mm²/s' END" length="0"/>
-    <field type="10" typeName="" name="likelihood" comment="" subType="0" precision="0" expression="CASE WHEN attribute('p_mine') IS NULL THEN 'not estimated' ELSE format_number(100 * attribute('p_mine'), 0) || ' %' END" length="0"/>
-    <field type="10" typeName="" name="cue_confidence_pct" comment="" subType="0" precision="0" expression="CASE WHEN coalesce(attribute('cue_confidence'), attribute('confidence')) IS NULL THEN NULL ELSE format_number(100 * coalesce(attribute('cue_confidence'), attribute('confidence')), 0) || ' %' END" length="0"/>
-    <field type="10" typeName="" name="short_id" comment="" subType="0" precision="0" expression="'S-' || lpad(to_string(to_int(regexp_substr(&quot;anomaly_id&quot;, '(\\d+)$'))), 3, '0')" length="0"/>
-    <field type="10" typeName="" name="depth" comment="" subType="0" precision="0" expression="CASE WHEN &quot;depth_m&quot; * 100 IS NULL THEN 'not characterised' WHEN &quot;depth_sigma_m&quot; * 100 IS NULL THEN format_number(&quot;depth_m&quot; * 100, 1) || ' cm' ELSE format_number(&quot;depth_m&quot; * 100, 1) || ' ± ' || format_number(&quot;depth_sigma_m&quot; * 100, 1) || ' cm' END" length="0"/>
-    <field type="10" typeName="" name="diffusivity" comment="" subType="0" precision="0" expression="CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 IS NULL THEN 'not characterised' WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 IS NULL THEN CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' mm²/s' ELSE CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' ± ' || CASE WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_sigma_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6))))) END || ' mm²/s' END" length="0"/>
-    <field type="10" typeName="" name="likelihood" comment="" subType="0" precision="0" expression="CASE WHEN attribute('p_mine') IS NULL THEN 'not estimated' ELSE format_number(100 * attribute('p_mine'), 0) || ' %' END" length="0"/>
-    <field type="10" typeName="" name="cue_confidence_pct" comment="" subType="0" precision="0" expression="CASE WHEN coalesce(attribute('cue_confidence'), attribute('confidence')) IS NULL THEN NULL ELSE format_number(100 * coalesce(attribute('cue_confidence'), attribute('confidence')), 0) || ' %' END" length="0"/>
-    <field type="10" typeName="" name="short_id" comment="" subType="0" precision="0" expression="'S-' || lpad(to_string(to_int(regexp_substr(&quot;anomaly_id&quot;, '(\\d+)$'))), 3, '0')" length="0"/>
-    <field type="10" typeName="" name="depth" comment="" subType="0" precision="0" expression="CASE WHEN &quot;depth_m&quot; * 100 IS NULL THEN 'not characterised' WHEN &quot;depth_sigma_m&quot; * 100 IS NULL THEN format_number(&quot;depth_m&quot; * 100, 1) || ' cm' ELSE format_number(&quot;depth_m&quot; * 100, 1) || ' ± ' || format_number(&quot;depth_sigma_m&quot; * 100, 1) || ' cm' END" length="0"/>
-    <field type="10" typeName="" name="diffusivity" comment="" subType="0" precision="0" expression="CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 IS NULL THEN 'not characterised' WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 IS NULL THEN CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' mm²/s' ELSE CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' ± ' || CASE WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_sigma_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6))))) END || ' mm²/s' END" length="0"/>
-    <field type="10" typeName="" name="likelihood" comment="" subType="0" precision="0" expression="CASE WHEN attribute('p_mine') IS NULL THEN 'not estimated' ELSE format_number(100 * attribute('p_mine'), 0) || ' %' END" length="0"/>
-    <field type="10" typeName="" name="cue_confidence_pct" comment="" subType="0" precision="0" expression="CASE WHEN coalesce(attribute('cue_confidence'), attribute('confidence')) IS NULL THEN NULL ELSE format_number(100 * coalesce(attribute('cue_confidence'), attribute('confidence')), 0) || ' %' END" length="0"/>
-    <field type="10" typeName="" name="short_id" comment="" subType="0" precision="0" expression="'S-' || lpad(to_string(to_int(regexp_substr(&quot;anomaly_id&quot;, '(\\d+)$'))), 3, '0')" length="0"/>
-    <field type="10" typeName="" name="depth" comment="" subType="0" precision="0" expression="CASE WHEN &quot;depth_m&quot; * 100 IS NULL THEN 'not characterised' WHEN &quot;depth_sigma_m&quot; * 100 IS NULL THEN format_number(&quot;depth_m&quot; * 100, 1) || ' cm' ELSE format_number(&quot;depth_m&quot; * 100, 1) || ' ± ' || format_number(&quot;depth_sigma_m&quot; * 100, 1) || ' cm' END" length="0"/>
-    <field type="10" typeName="" name="diffusivity" comment="" subType="0" precision="0" expression="CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 IS NULL THEN 'not characterised' WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 > &quot;diffusivity_m2s&quot; * 1e6 THEN 'unconstrained' WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 IS NULL THEN CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' mm²/s' ELSE CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' ± ' || CASE WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_sigma_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6))))) END || ' mm²/s' END" length="0"/>
-    <field type="10" typeName="" name="likelihood" comment="" subType="0" precision="0" expression="CASE WHEN attribute('p_mine') IS NULL THEN 'not estimated' ELSE format_number(100 * attribute('p_mine'), 0) || ' %' END" length="0"/>
-    <field type="10" typeName="" name="cue_confidence_pct" comment="" subType="0" precision="0" expression="CASE WHEN coalesce(attribute('cue_confidence'), attribute('confidence')) IS NULL THEN NULL ELSE format_number(100 * coalesce(attribute('cue_confidence'), attribute('confidence')), 0) || ' %' END" length="0"/>
+    <field comment="" typeName="" precision="0" subType="0" length="0" name="short_id" type="10" expression="'S-' || lpad(to_string(to_int(regexp_substr(&quot;anomaly_id&quot;, '(\\d+)$'))), 3, '0')"/>
+    <field comment="" typeName="" precision="0" subType="0" length="0" name="depth" type="10" expression="CASE WHEN &quot;depth_m&quot; * 100 IS NULL THEN 'not characterised' WHEN &quot;depth_sigma_m&quot; * 100 IS NULL THEN format_number(&quot;depth_m&quot; * 100, 1) || ' cm' ELSE format_number(&quot;depth_m&quot; * 100, 1) || ' ± ' || format_number(&quot;depth_sigma_m&quot; * 100, 1) || ' cm' END"/>
+    <field comment="" typeName="" precision="0" subType="0" length="0" name="diffusivity" type="10" expression="CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 IS NULL THEN 'not characterised' WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 IS NULL THEN CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' mm²/s' ELSE CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' ± ' || CASE WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_sigma_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6))))) END || ' mm²/s' END"/>
+    <field comment="" typeName="" precision="0" subType="0" length="0" name="likelihood" type="10" expression="CASE WHEN attribute('p_mine') IS NULL THEN 'not estimated' ELSE format_number(100 * attribute('p_mine'), 0) || ' %' END"/>
+    <field comment="" typeName="" precision="0" subType="0" length="0" name="cue_confidence_pct" type="10" expression="CASE WHEN coalesce(attribute('cue_confidence'), attribute('confidence')) IS NULL THEN NULL ELSE format_number(100 * coalesce(attribute('cue_confidence'), attribute('confidence')), 0) || ' %' END"/>
+    <field comment="" typeName="" precision="0" subType="0" length="0" name="short_id" type="10" expression="'S-' || lpad(to_string(to_int(regexp_substr(&quot;anomaly_id&quot;, '(\\d+)$'))), 3, '0')"/>
+    <field comment="" typeName="" precision="0" subType="0" length="0" name="depth" type="10" expression="CASE WHEN &quot;depth_m&quot; * 100 IS NULL THEN 'not characterised' WHEN &quot;depth_sigma_m&quot; * 100 IS NULL THEN format_number(&quot;depth_m&quot; * 100, 1) || ' cm' ELSE format_number(&quot;depth_m&quot; * 100, 1) || ' ± ' || format_number(&quot;depth_sigma_m&quot; * 100, 1) || ' cm' END"/>
+    <field comment="" typeName="" precision="0" subType="0" length="0" name="diffusivity" type="10" expression="CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 IS NULL THEN 'not characterised' WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 IS NULL THEN CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' mm²/s' ELSE CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' ± ' || CASE WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_sigma_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6))))) END || ' mm²/s' END"/>
+    <field comment="" typeName="" precision="0" subType="0" length="0" name="likelihood" type="10" expression="CASE WHEN attribute('p_mine') IS NULL THEN 'not estimated' ELSE format_number(100 * attribute('p_mine'), 0) || ' %' END"/>
+    <field comment="" typeName="" precision="0" subType="0" length="0" name="cue_confidence_pct" type="10" expression="CASE WHEN coalesce(attribute('cue_confidence'), attribute('confidence')) IS NULL THEN NULL ELSE format_number(100 * coalesce(attribute('cue_confidence'), attribute('confidence')), 0) || ' %' END"/>
+    <field comment="" typeName="" precision="0" subType="0" length="0" name="short_id" type="10" expression="'S-' || lpad(to_string(to_int(regexp_substr(&quot;anomaly_id&quot;, '(\\d+)$'))), 3, '0')"/>
+    <field comment="" typeName="" precision="0" subType="0" length="0" name="depth" type="10" expression="CASE WHEN &quot;depth_m&quot; * 100 IS NULL THEN 'not characterised' WHEN &quot;depth_sigma_m&quot; * 100 IS NULL THEN format_number(&quot;depth_m&quot; * 100, 1) || ' cm' ELSE format_number(&quot;depth_m&quot; * 100, 1) || ' ± ' || format_number(&quot;depth_sigma_m&quot; * 100, 1) || ' cm' END"/>
+    <field comment="" typeName="" precision="0" subType="0" length="0" name="diffusivity" type="10" expression="CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 IS NULL THEN 'not characterised' WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 IS NULL THEN CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' mm²/s' ELSE CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' ± ' || CASE WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_sigma_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6))))) END || ' mm²/s' END"/>
+    <field comment="" typeName="" precision="0" subType="0" length="0" name="likelihood" type="10" expression="CASE WHEN attribute('p_mine') IS NULL THEN 'not estimated' ELSE format_number(100 * attribute('p_mine'), 0) || ' %' END"/>
+    <field comment="" typeName="" precision="0" subType="0" length="0" name="cue_confidence_pct" type="10" expression="CASE WHEN coalesce(attribute('cue_confidence'), attribute('confidence')) IS NULL THEN NULL ELSE format_number(100 * coalesce(attribute('cue_confidence'), attribute('confidence')), 0) || ' %' END"/>
+    <field comment="" typeName="" precision="0" subType="0" length="0" name="short_id" type="10" expression="'S-' || lpad(to_string(to_int(regexp_substr(&quot;anomaly_id&quot;, '(\\d+)$'))), 3, '0')"/>
+    <field comment="" typeName="" precision="0" subType="0" length="0" name="depth" type="10" expression="CASE WHEN &quot;depth_m&quot; * 100 IS NULL THEN 'not characterised' WHEN &quot;depth_sigma_m&quot; * 100 IS NULL THEN format_number(&quot;depth_m&quot; * 100, 1) || ' cm' ELSE format_number(&quot;depth_m&quot; * 100, 1) || ' ± ' || format_number(&quot;depth_sigma_m&quot; * 100, 1) || ' cm' END"/>
+    <field comment="" typeName="" precision="0" subType="0" length="0" name="diffusivity" type="10" expression="CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 IS NULL THEN 'not characterised' WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 IS NULL THEN CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' mm²/s' ELSE CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' ± ' || CASE WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_sigma_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6))))) END || ' mm²/s' END"/>
+    <field comment="" typeName="" precision="0" subType="0" length="0" name="likelihood" type="10" expression="CASE WHEN attribute('p_mine') IS NULL THEN 'not estimated' ELSE format_number(100 * attribute('p_mine'), 0) || ' %' END"/>
+    <field comment="" typeName="" precision="0" subType="0" length="0" name="cue_confidence_pct" type="10" expression="CASE WHEN coalesce(attribute('cue_confidence'), attribute('confidence')) IS NULL THEN NULL ELSE format_number(100 * coalesce(attribute('cue_confidence'), attribute('confidence')), 0) || ' %' END"/>
+    <field comment="" typeName="" precision="0" subType="0" length="0" name="short_id" type="10" expression="'S-' || lpad(to_string(to_int(regexp_substr(&quot;anomaly_id&quot;, '(\\d+)$'))), 3, '0')"/>
+    <field comment="" typeName="" precision="0" subType="0" length="0" name="depth" type="10" expression="CASE WHEN &quot;depth_m&quot; * 100 IS NULL THEN 'not characterised' WHEN &quot;depth_sigma_m&quot; * 100 IS NULL THEN format_number(&quot;depth_m&quot; * 100, 1) || ' cm' ELSE format_number(&quot;depth_m&quot; * 100, 1) || ' ± ' || format_number(&quot;depth_sigma_m&quot; * 100, 1) || ' cm' END"/>
+    <field comment="" typeName="" precision="0" subType="0" length="0" name="diffusivity" type="10" expression="CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 IS NULL THEN 'not characterised' WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 IS NULL THEN CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' mm²/s' ELSE CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' ± ' || CASE WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_sigma_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6))))) END || ' mm²/s' END"/>
+    <field comment="" typeName="" precision="0" subType="0" length="0" name="likelihood" type="10" expression="CASE WHEN attribute('p_mine') IS NULL THEN 'not estimated' ELSE format_number(100 * attribute('p_mine'), 0) || ' %' END"/>
+    <field comment="" typeName="" precision="0" subType="0" length="0" name="cue_confidence_pct" type="10" expression="CASE WHEN coalesce(attribute('cue_confidence'), attribute('confidence')) IS NULL THEN NULL ELSE format_number(100 * coalesce(attribute('cue_confidence'), attribute('confidence')), 0) || ' %' END"/>
+    <field comment="" typeName="" precision="0" subType="0" length="0" name="short_id" type="10" expression="'S-' || lpad(to_string(to_int(regexp_substr(&quot;anomaly_id&quot;, '(\\d+)$'))), 3, '0')"/>
+    <field comment="" typeName="" precision="0" subType="0" length="0" name="depth" type="10" expression="CASE WHEN &quot;depth_m&quot; * 100 IS NULL THEN 'not characterised' WHEN &quot;depth_sigma_m&quot; * 100 IS NULL THEN format_number(&quot;depth_m&quot; * 100, 1) || ' cm' ELSE format_number(&quot;depth_m&quot; * 100, 1) || ' ± ' || format_number(&quot;depth_sigma_m&quot; * 100, 1) || ' cm' END"/>
+    <field comment="" typeName="" precision="0" subType="0" length="0" name="diffusivity" type="10" expression="CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 IS NULL THEN 'not characterised' WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 > &quot;diffusivity_m2s&quot; * 1e6 THEN 'unconstrained' WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 IS NULL THEN CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' mm²/s' ELSE CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' ± ' || CASE WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_sigma_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6))))) END || ' mm²/s' END"/>
+    <field comment="" typeName="" precision="0" subType="0" length="0" name="likelihood" type="10" expression="CASE WHEN attribute('p_mine') IS NULL THEN 'not estimated' ELSE format_number(100 * attribute('p_mine'), 0) || ' %' END"/>
+    <field comment="" typeName="" precision="0" subType="0" length="0" name="cue_confidence_pct" type="10" expression="CASE WHEN coalesce(attribute('cue_confidence'), attribute('confidence')) IS NULL THEN NULL ELSE format_number(100 * coalesce(attribute('cue_confidence'), attribute('confidence')), 0) || ' %' END"/>
+    <field comment="" typeName="" precision="0" subType="0" length="0" name="short_id" type="10" expression="'S-' || lpad(to_string(to_int(regexp_substr(&quot;anomaly_id&quot;, '(\\d+)$'))), 3, '0')"/>
+    <field comment="" typeName="" precision="0" subType="0" length="0" name="depth" type="10" expression="CASE WHEN &quot;depth_m&quot; * 100 IS NULL THEN 'not characterised' WHEN &quot;depth_sigma_m&quot; * 100 IS NULL THEN format_number(&quot;depth_m&quot; * 100, 1) || ' cm' ELSE format_number(&quot;depth_m&quot; * 100, 1) || ' ± ' || format_number(&quot;depth_sigma_m&quot; * 100, 1) || ' cm' END"/>
+    <field comment="" typeName="" precision="0" subType="0" length="0" name="diffusivity" type="10" expression="CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 IS NULL THEN 'not characterised' WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 > &quot;diffusivity_m2s&quot; * 1e6 THEN 'unconstrained' WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 IS NULL THEN CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' mm²/s' ELSE CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' ± ' || CASE WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_sigma_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6))))) END || ' mm²/s' END"/>
+    <field comment="" typeName="" precision="0" subType="0" length="0" name="likelihood" type="10" expression="CASE WHEN attribute('p_mine') IS NULL THEN 'not estimated' ELSE format_number(100 * attribute('p_mine'), 0) || ' %' END"/>
+    <field comment="" typeName="" precision="0" subType="0" length="0" name="cue_confidence_pct" type="10" expression="CASE WHEN coalesce(attribute('cue_confidence'), attribute('confidence')) IS NULL THEN NULL ELSE format_number(100 * coalesce(attribute('cue_confidence'), attribute('confidence')), 0) || ' %' END"/>
+    <field comment="" typeName="" precision="0" subType="0" length="0" name="short_id" type="10" expression="'S-' || lpad(to_string(to_int(regexp_substr(&quot;anomaly_id&quot;, '(\\d+)$'))), 3, '0')"/>
+    <field comment="" typeName="" precision="0" subType="0" length="0" name="depth" type="10" expression="CASE WHEN &quot;depth_m&quot; * 100 IS NULL THEN 'not characterised' WHEN &quot;depth_sigma_m&quot; * 100 IS NULL THEN format_number(&quot;depth_m&quot; * 100, 1) || ' cm' ELSE format_number(&quot;depth_m&quot; * 100, 1) || ' ± ' || format_number(&quot;depth_sigma_m&quot; * 100, 1) || ' cm' END"/>
+    <field comment="" typeName="" precision="0" subType="0" length="0" name="diffusivity" type="10" expression="CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 IS NULL THEN 'not characterised' WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 > &quot;diffusivity_m2s&quot; * 1e6 THEN 'unconstrained' WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 IS NULL THEN CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' mm²/s' ELSE CASE WHEN &quot;diffusivity_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_m2s&quot; * 1e6))))) END || ' ± ' || CASE WHEN &quot;diffusivity_sigma_m2s&quot; * 1e6 = 0 THEN '0' ELSE format_number(round(&quot;diffusivity_sigma_m2s&quot; * 1e6, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6)))), max(0, 1 - floor(log10(abs(&quot;diffusivity_sigma_m2s&quot; * 1e6))))) END || ' mm²/s' END"/>
+    <field comment="" typeName="" precision="0" subType="0" length="0" name="likelihood" type="10" expression="CASE WHEN attribute('p_mine') IS NULL THEN 'not estimated' ELSE format_number(100 * attribute('p_mine'), 0) || ' %' END"/>
+    <field comment="" typeName="" precision="0" subType="0" length="0" name="cue_confidence_pct" type="10" expression="CASE WHEN coalesce(attribute('cue_confidence'), attribute('confidence')) IS NULL THEN NULL ELSE format_number(100 * coalesce(attribute('cue_confidence'), attribute('confidence')), 0) || ' %' END"/>
   </expressionfields>
-  <attributetableconfig actionWidgetStyle="dropDown" sortExpression="coalesce(attribute('priority'), 1000000 * (CASE WHEN &quot;class_cue&quot; = 'at_mine' THEN 0 WHEN &quot;class_cue&quot; = 'ap_mine' THEN 1 WHEN &quot;class_cue&quot; = 'unknown' THEN 2 ELSE 3 END) - round(1000 * max(abs(&quot;contrast_day_k&quot;), abs(&quot;contrast_night_k&quot;))))" sortOrder="0">
+  <attributetableconfig sortExpression="coalesce(attribute('priority'), 1000000 * (CASE WHEN &quot;class_cue&quot; = 'at_mine' THEN 0 WHEN &quot;class_cue&quot; = 'ap_mine' THEN 1 WHEN &quot;class_cue&quot; = 'unknown' THEN 2 ELSE 3 END) - round(1000 * max(abs(&quot;contrast_day_k&quot;), abs(&quot;contrast_night_k&quot;))))" actionWidgetStyle="dropDown" sortOrder="0">
     <columns>
-      <column type="field" hidden="0" name="anomaly_id" width="-1"/>
-      <column type="field" hidden="0" name="polarity" width="-1"/>
-      <column type="field" hidden="0" name="area_m2" width="-1"/>
-      <column type="field" hidden="0" name="p_mine" width="-1"/>
-      <column type="field" hidden="0" name="priority" width="-1"/>
-      <column type="field" hidden="0" name="cue_confidence" width="-1"/>
-      <column type="field" hidden="0" name="set_aside_reason" width="-1"/>
-      <column type="field" hidden="0" name="short_id" width="-1"/>
-      <column type="field" hidden="0" name="depth" width="-1"/>
-      <column type="field" hidden="0" name="diffusivity" width="-1"/>
-      <column type="field" hidden="0" name="likelihood" width="-1"/>
-      <column type="field" hidden="0" name="cue_confidence_pct" width="-1"/>
-      <column type="actions" hidden="1" width="-1"/>
+      <column hidden="0" width="-1" type="field" name="anomaly_id"/>
+      <column hidden="0" width="-1" type="field" name="polarity"/>
+      <column hidden="0" width="-1" type="field" name="area_m2"/>
+      <column hidden="0" width="-1" type="field" name="p_mine"/>
+      <column hidden="0" width="-1" type="field" name="priority"/>
+      <column hidden="0" width="-1" type="field" name="cue_confidence"/>
+      <column hidden="0" width="-1" type="field" name="set_aside_reason"/>
+      <column hidden="0" width="-1" type="field" name="short_id"/>
+      <column hidden="0" width="-1" type="field" name="depth"/>
+      <column hidden="0" width="-1" type="field" name="diffusivity"/>
+      <column hidden="0" width="-1" type="field" name="likelihood"/>
+      <column hidden="0" width="-1" type="field" name="cue_confidence_pct"/>
+      <column hidden="1" width="-1" type="actions"/>
     </columns>
   </attributetableconfig>
   <conditionalstyles>
@@ -674,58 +698,59 @@
   <featformsuppress>0</featformsuppress>
   <editorlayout>tablayout</editorlayout>
   <attributeEditorForm>
-    <attributeEditorContainer name="Suspect" columnCount="1" showLabel="1" groupBox="0" visibilityExpressionEnabled="0" visibilityExpression="">
-      <attributeEditorContainer name="Identification" columnCount="1" showLabel="1" groupBox="1" visibilityExpressionEnabled="0" visibilityExpression="">
-        <attributeEditorField index="27" name="short_id" showLabel="1"/>
-        <attributeEditorField index="0" name="anomaly_id" showLabel="1"/>
-        <attributeEditorField index="17" name="priority" showLabel="1"/>
-        <attributeEditorField index="14" name="class_cue" showLabel="1"/>
-        <attributeEditorField index="30" name="likelihood" showLabel="1"/>
-        <attributeEditorField index="31" name="cue_confidence_pct" showLabel="1"/>
-        <attributeEditorField index="12" name="status" showLabel="1"/>
-        <attributeEditorField index="13" name="polarity" showLabel="1"/>
-        <attributeEditorField index="18" name="set_aside_reason" showLabel="1"/>
+    <attributeEditorContainer groupBox="0" showLabel="1" visibilityExpressionEnabled="0" columnCount="1" name="Suspect" visibilityExpression="">
+      <attributeEditorContainer groupBox="1" showLabel="1" visibilityExpressionEnabled="0" columnCount="1" name="Identification" visibilityExpression="">
+        <attributeEditorField showLabel="1" name="short_id" index="28"/>
+        <attributeEditorField showLabel="1" name="anomaly_id" index="0"/>
+        <attributeEditorField showLabel="1" name="priority" index="17"/>
+        <attributeEditorField showLabel="1" name="class_cue" index="14"/>
+        <attributeEditorField showLabel="1" name="likelihood" index="31"/>
+        <attributeEditorField showLabel="1" name="cue_confidence_pct" index="32"/>
+        <attributeEditorField showLabel="1" name="status" index="12"/>
+        <attributeEditorField showLabel="1" name="found_by" index="27"/>
+        <attributeEditorField showLabel="1" name="polarity" index="13"/>
+        <attributeEditorField showLabel="1" name="set_aside_reason" index="18"/>
       </attributeEditorContainer>
-      <attributeEditorContainer name="Burial depth and soil" columnCount="1" showLabel="1" groupBox="1" visibilityExpressionEnabled="0" visibilityExpression="">
-        <attributeEditorField index="28" name="depth" showLabel="1"/>
-        <attributeEditorField index="29" name="diffusivity" showLabel="1"/>
+      <attributeEditorContainer groupBox="1" showLabel="1" visibilityExpressionEnabled="0" columnCount="1" name="Burial depth and soil" visibilityExpression="">
+        <attributeEditorField showLabel="1" name="depth" index="29"/>
+        <attributeEditorField showLabel="1" name="diffusivity" index="30"/>
       </attributeEditorContainer>
-      <attributeEditorContainer name="Thermal contrast" columnCount="1" showLabel="1" groupBox="1" visibilityExpressionEnabled="0" visibilityExpression="">
-        <attributeEditorField index="20" name="contrast_day_k" showLabel="1"/>
-        <attributeEditorField index="21" name="contrast_night_k" showLabel="1"/>
-        <attributeEditorField index="22" name="mine_curve_r" showLabel="1"/>
-        <attributeEditorField index="23" name="mine_curve_level" showLabel="1"/>
-        <attributeEditorField index="19" name="n_scans" showLabel="1"/>
+      <attributeEditorContainer groupBox="1" showLabel="1" visibilityExpressionEnabled="0" columnCount="1" name="Thermal contrast" visibilityExpression="">
+        <attributeEditorField showLabel="1" name="contrast_day_k" index="20"/>
+        <attributeEditorField showLabel="1" name="contrast_night_k" index="21"/>
+        <attributeEditorField showLabel="1" name="mine_curve_r" index="22"/>
+        <attributeEditorField showLabel="1" name="mine_curve_level" index="23"/>
+        <attributeEditorField showLabel="1" name="n_scans" index="19"/>
       </attributeEditorContainer>
-      <attributeEditorContainer name="Shape" columnCount="1" showLabel="1" groupBox="1" visibilityExpressionEnabled="0" visibilityExpression="">
-        <attributeEditorField index="6" name="diameter_m" showLabel="1"/>
-        <attributeEditorField index="5" name="area_m2" showLabel="1"/>
-        <attributeEditorField index="7" name="circularity" showLabel="1"/>
-      </attributeEditorContainer>
-    </attributeEditorContainer>
-    <attributeEditorContainer name="Contrast curve" columnCount="1" showLabel="1" groupBox="0" visibilityExpressionEnabled="0" visibilityExpression="">
-      <attributeEditorContainer name="Contrast curve" columnCount="1" showLabel="1" groupBox="1" visibilityExpressionEnabled="0" visibilityExpression="">
-        <attributeEditorField index="25" name="figure" showLabel="1"/>
+      <attributeEditorContainer groupBox="1" showLabel="1" visibilityExpressionEnabled="0" columnCount="1" name="Shape" visibilityExpression="">
+        <attributeEditorField showLabel="1" name="diameter_m" index="6"/>
+        <attributeEditorField showLabel="1" name="area_m2" index="5"/>
+        <attributeEditorField showLabel="1" name="circularity" index="7"/>
       </attributeEditorContainer>
     </attributeEditorContainer>
-    <attributeEditorContainer name="Position" columnCount="1" showLabel="1" groupBox="0" visibilityExpressionEnabled="0" visibilityExpression="">
-      <attributeEditorContainer name="Position" columnCount="1" showLabel="1" groupBox="1" visibilityExpressionEnabled="0" visibilityExpression="">
-        <attributeEditorField index="1" name="x" showLabel="1"/>
-        <attributeEditorField index="2" name="y" showLabel="1"/>
-        <attributeEditorField index="3" name="lat" showLabel="1"/>
-        <attributeEditorField index="4" name="lon" showLabel="1"/>
-        <attributeEditorField index="24" name="fix_quality" showLabel="1"/>
+    <attributeEditorContainer groupBox="0" showLabel="1" visibilityExpressionEnabled="0" columnCount="1" name="Contrast curve" visibilityExpression="">
+      <attributeEditorContainer groupBox="1" showLabel="1" visibilityExpressionEnabled="0" columnCount="1" name="Contrast curve" visibilityExpression="">
+        <attributeEditorField showLabel="1" name="figure" index="25"/>
       </attributeEditorContainer>
     </attributeEditorContainer>
-    <attributeEditorContainer name="Stored values" columnCount="1" showLabel="1" groupBox="0" visibilityExpressionEnabled="0" visibilityExpression="">
-      <attributeEditorContainer name="Stored values" columnCount="1" showLabel="1" groupBox="1" visibilityExpressionEnabled="0" visibilityExpression="">
-        <attributeEditorField index="8" name="depth_m" showLabel="1"/>
-        <attributeEditorField index="9" name="depth_sigma_m" showLabel="1"/>
-        <attributeEditorField index="10" name="diffusivity_m2s" showLabel="1"/>
-        <attributeEditorField index="11" name="diffusivity_sigma_m2s" showLabel="1"/>
-        <attributeEditorField index="16" name="p_mine" showLabel="1"/>
-        <attributeEditorField index="15" name="cue_confidence" showLabel="1"/>
-        <attributeEditorField index="26" name="contrast_series" showLabel="1"/>
+    <attributeEditorContainer groupBox="0" showLabel="1" visibilityExpressionEnabled="0" columnCount="1" name="Position" visibilityExpression="">
+      <attributeEditorContainer groupBox="1" showLabel="1" visibilityExpressionEnabled="0" columnCount="1" name="Position" visibilityExpression="">
+        <attributeEditorField showLabel="1" name="x" index="1"/>
+        <attributeEditorField showLabel="1" name="y" index="2"/>
+        <attributeEditorField showLabel="1" name="lat" index="3"/>
+        <attributeEditorField showLabel="1" name="lon" index="4"/>
+        <attributeEditorField showLabel="1" name="fix_quality" index="24"/>
+      </attributeEditorContainer>
+    </attributeEditorContainer>
+    <attributeEditorContainer groupBox="0" showLabel="1" visibilityExpressionEnabled="0" columnCount="1" name="Stored values" visibilityExpression="">
+      <attributeEditorContainer groupBox="1" showLabel="1" visibilityExpressionEnabled="0" columnCount="1" name="Stored values" visibilityExpression="">
+        <attributeEditorField showLabel="1" name="depth_m" index="8"/>
+        <attributeEditorField showLabel="1" name="depth_sigma_m" index="9"/>
+        <attributeEditorField showLabel="1" name="diffusivity_m2s" index="10"/>
+        <attributeEditorField showLabel="1" name="diffusivity_sigma_m2s" index="11"/>
+        <attributeEditorField showLabel="1" name="p_mine" index="16"/>
+        <attributeEditorField showLabel="1" name="cue_confidence" index="15"/>
+        <attributeEditorField showLabel="1" name="contrast_series" index="26"/>
       </attributeEditorContainer>
     </attributeEditorContainer>
   </attributeEditorForm>
