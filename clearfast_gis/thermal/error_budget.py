@@ -67,19 +67,19 @@ import numpy as np
 from clearfast_gis.thermal.inversion import MAX_DEPTH_SIGMA_M, Inversion
 from clearfast_gis.thermal.table import DEFAULT_DEPTHS_M
 
-GAIN_TERMS = {"blur_registration": 0.08, "emissivity_planck": 0.06}
+GAIN_TERMS = {"blur_registration": 0.08, "emissivity_estimate": 0.02}
 """1-sigma relative errors of the contrast curve's amplitude (module notes)."""
 
 OFFSET_TERM_K = 0.012
 """1-sigma error of the contrast curve's level, K (module notes)."""
 
-DEPTH_TERMS_M = {"object_height": 0.003, "background_ring": 0.001, "soil_terms": 0.002}
+DEPTH_TERMS_M = {"object_height": 0.001, "background_ring": 0.0005, "soil_terms": 0.002}
 """Constant 1-sigma depth terms of the model, m (module notes)."""
 
-DEPTH_RELATIVE = 0.10
+DEPTH_RELATIVE = 0.05
 """Depth-proportional 1-sigma term of the model, fraction of the estimated depth."""
 
-LOG10_ALPHA_TERMS = {"soil_heat_capacity": 0.04, "apparent_contrast_unmodelled": 0.09}
+LOG10_ALPHA_TERMS = {"soil_heat_capacity": 0.04, "measure_residual": 0.05}
 """1-sigma log10 diffusivity terms of the model (module notes)."""
 
 GAIN_TERM = math.sqrt(sum(v * v for v in GAIN_TERMS.values()))
