@@ -117,6 +117,14 @@ def first_band(series: np.ndarray) -> np.ndarray:
     return s[:, 0] if s.ndim == 2 else s
 
 
+def radius_nodes(radii_m: np.ndarray, max_nodes: int = 3) -> np.ndarray:
+    """A few object radii (m) spanning ``radii_m``, for one site table of several radii."""
+    r = np.clip(np.asarray(radii_m, dtype=float), 0.02, 0.25)
+    if r.size == 0:
+        return np.array([0.05])
+    return np.unique(np.round(np.quantile(r, np.linspace(0, 1, max_nodes)), 2))
+
+
 def chain_site_table(soil_forcing: Forcing, soil: Soil, radius_m, times_s: np.ndarray,
                      canopy: float = 0.0, height_m: float = DEFAULT_HEIGHT_M) -> SiteTable:
     """The chain's site table: disc means (:data:`CHAIN_TABLE_CENTRE`) of objects in ``soil``
@@ -177,20 +185,31 @@ def characterise(features: list[AnomalyFeatures], times_s: np.ndarray, forcing: 
         return {}
     measures = [anomaly_measure(f) for f in features]
     blur = np.zeros(len(features)) if blur_m is None else np.asarray(blur_m, dtype=float)
-    kinds = sorted({m.kind for m in measures}, key=lambda k: k.diameter_m)
     forcing = under_canopy(forcing, canopy)
     tables: dict = {}
-    for kind in kinds:
+    for kind in sorted({m.kind for m in measures if m.kind is not None},
+                       key=lambda k: k.diameter_m):
         progress.message(f"thermal model table for {kind.name} ({kind.diameter_m:.3f} m)")
         tables[kind] = chain_site_table(forcing, soil, kind.radius_m, times_s, canopy,
                                         kind.height_m)
+    others = [m.radius_m for m in measures if m.kind is None and m.radius_m > 0]
+    if others:  # footprints of no mine type's size: cylinders of the footprint's radius
+        nodes = radius_nodes(np.array(others))
+        progress.message("thermal model table for radii "
+                         f"{', '.join(f'{r:.2f}' for r in nodes)} m")
+        tables[None] = chain_site_table(forcing, soil, nodes if nodes.size > 1
+                                        else float(nodes[0]), times_s, canopy)
+        lo, hi = float(nodes.min()), float(nodes.max())
+        measures = [m if m.kind is not None else
+                    dataclasses.replace(m, radius_m=float(np.clip(m.radius_m, lo, hi)))
+                    for m in measures]
     out: dict[int, Inversion] = {}
     progress.start("characterise", len(features))
     for f, m, b in zip(features, measures, blur, strict=True):
         centre = first_band(f.centre_k) + ZERO_CELSIUS_K
         ring = first_band(f.ring_k) + ZERO_CELSIUS_K
         if (np.isfinite(centre) & np.isfinite(ring)).sum() >= 4 and m.over_m > 0:
-            inv = invert_anomaly(times_s, centre, ring, forcing, soil, m.kind.radius_m,
+            inv = invert_anomaly(times_s, centre, ring, forcing, soil, m.radius_m,
                                  table=tables[m.kind], over_m=m.over_m, ring_m=m.ring_m,
                                  blur_m=float(b) if np.isfinite(b) else 0.0, gain=gain)
             out[f.id] = with_chain_errors(inv, cover_gain_sigma(canopy))
