@@ -7,14 +7,14 @@ and in apparent temperature (:mod:`clearfast_gis.thermal.apparent`). The model's
 expected mine type nearest the footprint's size (:func:`clearfast_gis.minetypes.nearest_mine_type`),
 not a cylinder of the footprint's size: over a shallow mine the footprint is smaller than the
 casing, over a deep one larger (docs/thermal.md, "The object and the measure"). A footprint
-more than :data:`TYPE_SIZE_RATIO` times larger or smaller than every type is no mine of the
-survey's types as the camera sees one (clutter, a patch, two objects as one): it is modelled as
-a cylinder of its own footprint's size, as before the types were modelled.
+more than :data:`TYPE_SIZE_RATIO` times smaller than the nearest type is no mine of that type
+as the camera sees one (clutter between the types' sizes): it is modelled as a cylinder of its
+own footprint's size, as before the types were modelled. A larger footprint keeps its type:
+heat spreads over a deep mine.
 """
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -24,11 +24,11 @@ from clearfast_gis.minetypes import MineType, nearest_mine_type
 from clearfast_gis.thermal.table import DEFAULT_HEIGHT_M
 
 TYPE_SIZE_RATIO = 1.3
-"""Largest ratio (either way) of an anomaly's footprint diameter to the nearest mine type's
-for the type to be its model object: the half-maximum footprints of the mines at 0-5 cm on
-the demo and conditions surveys were 0.94-1.10 times the AP type's and 0.98-1.00 times the AT
-type's; clutter of 15-25 cm, between the two types, had been fitted as an AT mine with status
-``ok``."""
+"""Largest ratio of the nearest mine type's diameter to an anomaly's footprint diameter for
+the type to be its model object: the half-maximum footprints of the mines at 0-3 cm on the
+demo and conditions surveys were 0.94-1.10 times the AP type's and 0.98-1.00 times the AT
+type's (5 cm AP mines up to 1.8 times); clutter of 18-25 cm, nearest the AT type, had been
+fitted as an AT mine with status ``ok``."""
 
 
 @dataclass(frozen=True)
@@ -46,10 +46,10 @@ class Measure:
 
 
 def anomaly_measure(feature: AnomalyFeatures, max_ratio: float = TYPE_SIZE_RATIO) -> Measure:
-    """The :class:`Measure` of one anomaly from its features: the nearest mine type when the
-    footprint's diameter is within ``max_ratio`` of it (else a cylinder of the footprint's
-    radius and :data:`~clearfast_gis.thermal.table.DEFAULT_HEIGHT_M`), the footprint's
-    radius ``diameter_m / 2``, the ring's radii from the blob's equivalent radius
+    """The :class:`Measure` of one anomaly from its features: the nearest mine type unless
+    the footprint's diameter is more than ``max_ratio`` times smaller (then a cylinder of the
+    footprint's radius and :data:`~clearfast_gis.thermal.table.DEFAULT_HEIGHT_M`), the
+    footprint's radius ``diameter_m / 2``, the ring's radii from the blob's equivalent radius
     (:func:`~clearfast_gis.detection.features.ring_radii_px`) times the cell size
     ``diameter_m / diameter_px`` (m)."""
     over = 0.5 * float(feature.diameter_m)
@@ -61,6 +61,6 @@ def anomaly_measure(feature: AnomalyFeatures, max_ratio: float = TYPE_SIZE_RATIO
     r_in, r_out = ring_radii_px(r_eq)
     ring = (r_in * cell, r_out * cell)
     kind = nearest_mine_type(float(feature.diameter_m))
-    if over > 0 and abs(math.log(2.0 * over / kind.diameter_m)) <= math.log(max_ratio):
+    if over > 0 and 2.0 * over * max_ratio >= kind.diameter_m:
         return Measure(kind, kind.radius_m, kind.height_m, over, ring)
     return Measure(None, over, DEFAULT_HEIGHT_M, over, ring)

@@ -40,11 +40,13 @@ def test_a_small_blob_keeps_a_ring_beyond_it():
     assert m.ring_m == pytest.approx((0.04, 0.08))
 
 
-def test_a_footprint_of_no_types_size_is_its_own_cylinder():
+def test_a_footprint_much_smaller_than_its_type_is_its_own_cylinder():
     ap, at = MINE_TYPES[0], MINE_TYPES[1]
-    edge = ap.diameter_m * TYPE_SIZE_RATIO
-    assert anomaly_measure(feature(0.99 * edge, 0.2)).kind == ap
-    for d in (1.01 * edge, 0.2, at.diameter_m / (1.01 * TYPE_SIZE_RATIO), 0.6):
+    # larger than the AP type (heat spreads over a deep mine): still the AP type
+    assert anomaly_measure(feature(1.7 * ap.diameter_m, 0.2)).kind == ap
+    assert anomaly_measure(feature(ap.diameter_m / (0.99 * TYPE_SIZE_RATIO), 0.1)).kind == ap
+    assert anomaly_measure(feature(at.diameter_m / (0.99 * TYPE_SIZE_RATIO), 0.3)).kind == at
+    for d in (0.2, at.diameter_m / (1.01 * TYPE_SIZE_RATIO), ap.diameter_m / 1.4):
         m = anomaly_measure(feature(d, d))
         assert m.kind is None
         assert (m.radius_m, m.height_m, m.over_m) == pytest.approx((d / 2, DEFAULT_HEIGHT_M,
