@@ -7,8 +7,9 @@ models for that detection (the nearest mine type over the footprint, against the
 through the mosaics' blur, times the apparent gain) at the mine's *true* depth and
 diffusivity: ``measured = k model + c``. A slope ``k`` of 1 means the model of the measure is
 complete; its mean and spread are the gain term of ``clearfast_gis.thermal.error_budget``.
-The characterisation stage of each survey is run again (the products are rewritten, with
-the same values) to take its inputs.
+The summary is of the mines modelled as their type (not of those whose footprint is of no
+type's size). The characterisation stage of each survey is run again (the products are
+rewritten, with the same values) to take its inputs.
 
     python benchmarks/chain_curve_gain.py SURVEY:PRODUCTS [SURVEY:PRODUCTS ...]
 """
@@ -50,8 +51,10 @@ def characterisation_inputs(survey: str, products: str) -> dict:
     return seen
 
 
-def mine_slopes(survey: str, products: str) -> list[tuple[str, float, float, float]]:
-    """(mine id, true depth m, slope k, intercept c K) of every matched mine."""
+def mine_slopes(survey: str, products: str) -> list[tuple[str, float, float, float, str]]:
+    """(mine id, true depth m, slope k, intercept c K, model object) of every matched mine;
+    the model object is the mine type's name or ``footprint`` (a cylinder of the footprint's
+    size, :func:`clearfast_gis.thermal.measure.anomaly_measure`)."""
     c = characterisation_inputs(survey, products)
     feats = c["features"]
     fx, fy = np.array([f.x for f in feats]), np.array([f.y for f in feats])
@@ -68,19 +71,21 @@ def mine_slopes(survey: str, products: str) -> list[tuple[str, float, float, flo
         if d[j] > 0.5 * m["diameter_m"] + 0.05:
             continue
         me = anomaly_measure(feats[j])
-        if me.kind not in tables:
-            tables[me.kind] = chain_site_table(forcing, c["soil"], me.kind.radius_m, t,
-                                               c["canopy"], me.kind.height_m)
-        tab = tables[me.kind]
+        key = (me.radius_m, me.height_m)
+        if key not in tables:
+            tables[key] = chain_site_table(forcing, c["soil"], me.radius_m, t, c["canopy"],
+                                           me.height_m)
+        tab = tables[key]
         blur = 0.0 if c["blur_m"] is None else float(np.asarray(c["blur_m"])[j])
-        grid = tab.contrast_for(me.kind.radius_m, t, me.over_m, me.ring_m, blur) * gain
+        grid = tab.contrast_for(me.radius_m, t, me.over_m, me.ring_m, blur) * gain
         model = contrast_spline(tab.depths_m, tab.log10_alpha, grid)(
             np.array([[m["depth_m"], np.log10(m["diffusivity_m2s"])]]))[0]
         obs = first_band(feats[j].centre_k) - first_band(feats[j].ring_k)
         ok = np.isfinite(obs)
         (k, c0), *_ = np.linalg.lstsq(np.stack([model[ok], np.ones(ok.sum())], axis=1),
                                       obs[ok], rcond=None)
-        out.append((m["id"], m["depth_m"], float(k), float(c0)))
+        out.append((m["id"], m["depth_m"], float(k), float(c0),
+                    me.kind.name if me.kind is not None else "footprint"))
     return out
 
 
@@ -88,13 +93,15 @@ def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("pairs", nargs="+", metavar="SURVEY:PRODUCTS")
     args = ap.parse_args()
-    print("| survey | mine | true depth cm | slope k | intercept K |\n|---|---|---|---|---|")
+    print("| survey | mine | true depth cm | model object | slope k | intercept K |\n"
+          "|---|---|---|---|---|---|")
     ks: dict[str, list[float]] = {}
     for pair in args.pairs:
         survey, products = pair.split(":")
-        for mid, depth, k, c0 in mine_slopes(survey, products):
-            ks.setdefault(mid[:2], []).append(k)
-            print(f"| {survey} | {mid} | {100 * depth:.0f} | {k:.3f} | {c0:+.3f} |")
+        for mid, depth, k, c0, model in mine_slopes(survey, products):
+            if model != "footprint":  # the summary is of the mine types' model
+                ks.setdefault(mid[:2], []).append(k)
+            print(f"| {survey} | {mid} | {100 * depth:.0f} | {model} | {k:.3f} | {c0:+.3f} |")
     every = [k for v in ks.values() for k in v]
     print("\n| mines | n | mean k | sd k | rms of k - 1 |\n|---|---|---|---|---|")
     for name, v in sorted(ks.items()) + [("all", every)]:

@@ -19,15 +19,15 @@ gain: blur and registration       8 % of the      the mosaics' contrast curve of
 (sensor, mosaic, sub-pixel        contrast        (at its detection) against the model's
 shifts between scans)                             curve at its true depth and diffusivity,
                                                   through the modelled blur and gain: slope
-                                                  0.92 +- 0.04 (24 mines at 0-5 cm, demo
-                                                  seeds 3-6); the blur the model takes in
-                                                  (:mod:`clearfast_gis.mosaic.blur`) leaves
-                                                  the mean loss and the spread, 0.09 rms
-gain: the estimated band          2 %             the estimate against the twin's sand
-emissivity (the apparent                          (0.870 against 0.886 at its mean
-contrast's gain is modelled,                      moisture) and the moisture field's spread
-:mod:`~clearfast_gis.thermal.                     around a mine (about 0.015)
-apparent`)
+                                                  0.93 +- 0.03 (22 mines at 0-5 cm, demo
+                                                  seeds 3-6, ``benchmarks/chain_curve_gain.
+                                                  py``); the mean loss the model leaves and
+                                                  the spread, 0.075 rms
+gain: the estimated band          2 %             the moisture field's spread of the sand's
+emissivity (the apparent                          band emissivity around a mine (about
+contrast's gain is modelled,                      0.015); the estimate's own error against
+:mod:`~clearfast_gis.thermal.                     the twin's emissivity is not measured
+apparent`)                                        separately (the slope above holds it)
 offset: background ring           0.012 K         the disc-minus-ring regressions'
                                                   intercepts on the truth rasters (rms)
 ================================  ==============  =========================================
