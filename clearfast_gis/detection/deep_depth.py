@@ -21,9 +21,9 @@ the offset ``b`` (the ring's level) linear and free within their priors :data:`D
 +- :data:`DISC_RING_GAIN_SIGMA` and 0 +- :data:`clearfast_gis.thermal.error_budget.OFFSET_TERM_K`.
 The noise ``s_k`` is scaled by the fit's reduced chi-square when that exceeds 1. The depth is
 the profile's minimum (parabola through the best grid node and its neighbours), its fit sigma
-half the width of ``chi2 <= min + 1``; the model's constant terms of
-:mod:`clearfast_gis.thermal.error_budget` (object height, ring, soil terms) and
-:data:`SHAPE_DEPTH_RELATIVE` of the depth are added in quadrature.
+half the width of ``chi2 <= min + 1``; the shape fit's constant terms (object height, ring,
+soil terms, :data:`SHAPE_DEPTH_TERMS_M`) and :data:`SHAPE_DEPTH_RELATIVE` of the depth are
+added in quadrature.
 
 A profile whose 1-sigma interval reaches either end of :data:`PROFILE_DEPTHS_M`, or whose total
 sigma exceeds :data:`MAX_DEEP_SIGMA_M`, is ``not_characterised``; so is a core larger than the
@@ -42,9 +42,9 @@ from clearfast_gis.thermal.error_budget import OFFSET_TERM_K, model_depth_varian
 from clearfast_gis.thermal.inversion import Inversion
 
 __all__ = ["DISC_RING_GAIN", "DISC_RING_GAIN_SIGMA", "MAX_DEEP_SIGMA_M", "PROFILE_DEPTHS_M",
-           "MAX_WIDE_RATIO", "SHAPE_DEPTH_RELATIVE", "DepthProfile", "characterise_cores",
-           "deep_inversion", "depth_profile", "model_sigma_m", "wide_ratio",
-           "with_core_depths"]
+           "MAX_WIDE_RATIO", "SHAPE_DEPTH_RELATIVE", "SHAPE_DEPTH_TERMS_M", "DepthProfile",
+           "characterise_cores", "deep_inversion", "depth_profile", "model_sigma_m",
+           "wide_ratio", "with_core_depths"]
 
 #: Depths of the profile's reference curves, m (top of the object): from the shallow end of
 #: the deep search to below its deepest template.
@@ -68,6 +68,14 @@ DISC_RING_GAIN_SIGMA = 0.125
 #: (:data:`clearfast_gis.thermal.error_budget.DEPTH_RELATIVE`) is its trade of depth against
 #: the object's diffusivity, which the shape fit does not make (the fill is assumed).
 SHAPE_DEPTH_RELATIVE = 0.05
+
+#: The shape fit's constant 1-sigma depth terms, m. Its template is the reference AP mine's
+#: axis curve, taken through the disc-ring gain's prior, not the anomaly's own object measured
+#: as the chain measured it (the general inversion's :data:`~clearfast_gis.thermal.
+#: error_budget.DEPTH_TERMS_M`): a mine of another height than the reference costs 0.3 cm
+#: (tables for 5 and 8 cm objects against an 8 cm mine: 0.3-0.5 cm for 3 cm of height), the
+#: ring's halo 0.1 cm, the soil terms 0.2 cm.
+SHAPE_DEPTH_TERMS_M = {"object_height": 0.003, "background_ring": 0.001, "soil_terms": 0.002}
 
 #: Total depth sigma above which a deep core's depth is not characterised, m: at most this,
 #: a 2-sigma error stays within 2 cm.
@@ -227,7 +235,7 @@ def depth_profile(contrast_k: np.ndarray, noise_k: np.ndarray, templates_k: np.n
 def model_sigma_m(depth_m: float) -> float:
     """The model's 1-sigma depth terms at ``depth_m`` (m), in quadrature, m
     (:mod:`clearfast_gis.thermal.error_budget`)."""
-    return math.sqrt(model_depth_variance(depth_m, SHAPE_DEPTH_RELATIVE))
+    return math.sqrt(model_depth_variance(depth_m, SHAPE_DEPTH_RELATIVE, SHAPE_DEPTH_TERMS_M))
 
 
 def deep_inversion(profile: DepthProfile, noise_k: float, ratio: float = 0.0) -> Inversion:

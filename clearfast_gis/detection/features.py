@@ -45,7 +45,8 @@ from clearfast_gis.detection.detector import DetectionResult, count_finite
 from clearfast_gis.detection.stack import as_scan_stack, iter_images, map_scans
 from clearfast_gis.solar import local_solar_hour
 
-__all__ = ["RING_RADII", "AnomalyFeatures", "blob_features", "features_table", "summary_polarity"]
+__all__ = ["RING_RADII", "AnomalyFeatures", "blob_features", "features_table", "ring_radii_px",
+           "summary_polarity"]
 
 #: Inner and outer radius of the background ring around an object, in its equivalent radii.
 RING_RADII = (1.5, 2.5)
@@ -92,6 +93,14 @@ class AnomalyFeatures:
     core_contrast_k: np.ndarray | None = None
     core_wide_contrast_k: np.ndarray | None = None
     core_noise_k: np.ndarray | None = None
+
+
+def ring_radii_px(r_eq_px: float, ring_radii: tuple[float, float] = RING_RADII
+                  ) -> tuple[float, float]:
+    """Inner and outer radius (pixels) of the background ring around a blob of equivalent
+    radius ``r_eq_px`` (pixels): ``ring_radii`` times it, at least 1 and 2 pixels beyond."""
+    r_in = max(ring_radii[0] * r_eq_px, r_eq_px + 1.0)
+    return r_in, max(ring_radii[1] * r_eq_px, r_in + 2.0)
 
 
 def summary_polarity(polarity_per_scan: np.ndarray, times_s: np.ndarray | None = None,
@@ -336,8 +345,7 @@ def blob_features(
     for region in regions:
         row, col = (float(v) for v in region.centroid)
         r_eq = float(np.sqrt(4.0 * int(region.area) / np.pi)) / 2.0
-        r_in = max(ring_radii[0] * r_eq, r_eq + 1.0)
-        r_out = max(ring_radii[1] * r_eq, r_in + 2.0)
+        r_in, r_out = ring_radii_px(r_eq, ring_radii)
         rr, cc = _ring_pixels(labels, valid, row, col, r_in, r_out)
         if rr.size < 2:  # inside another blob (a compact object split from a warm patch):
             # the patch around it is its background

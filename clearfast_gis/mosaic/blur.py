@@ -4,7 +4,11 @@ A pixel of a thermal camera integrates the ground over its footprint, ``R ifov``
 line of sight and ``R ifov / sin(grazing)`` along it (range ``R``, pixel angle ``ifov``),
 through optics whose spot is about a pixel: its point-spread function is close to a Gaussian
 of sigma :data:`PSF_SIGMA_PER_FOOTPRINT` times the footprint's geometric mean (a pixel's box
-alone would give ``1/sqrt(12)`` = 0.29). Resampling onto the mosaic's cells adds a cell's box,
+alone would give ``1/sqrt(12)`` = 0.29). The mosaic interpolates the frame's pixels bilinearly
+at its cells' centres (:func:`clearfast_gis.mosaic.project.resample`): between samples one
+footprint apart a linear interpolation is, over the cells' random phase against the pixels, a
+triangle of half-width a footprint, sigma ``1/sqrt(6)`` = 0.41 footprints
+(:data:`RESAMPLE_SIGMA_PER_FOOTPRINT`), as large as the optics' own term. The cell's box adds
 ``cell / sqrt(12)``. A small object's contrast, averaged over a disc, loses to this blur what
 spreads beyond the disc (and the background ring gains it): the thermal inversion models it
 (:meth:`clearfast_gis.thermal.table.SiteTable.contrast_for`).
@@ -20,6 +24,10 @@ PSF_SIGMA_PER_FOOTPRINT = 0.4
 geometric mean of the across and along footprints): the pixel's box (0.29) widened by an
 optical spot about a pixel across."""
 
+RESAMPLE_SIGMA_PER_FOOTPRINT = 1.0 / np.sqrt(6.0)
+"""Gaussian sigma of the mosaic's bilinear interpolation between a frame's pixels, in
+footprints: the triangle kernel's, ``1/sqrt(6)`` (module notes)."""
+
 
 def pixel_angle_rad(camera) -> float:
     """Angle one pixel subtends, rad: ``ifov_rad`` of an equiangular camera, ``1 / fx`` of a
@@ -34,14 +42,16 @@ def mosaic_blur_sigma_m(camera_xyz_m: ArrayLike, pixel_angle: float, x_m: ArrayL
 
     ``camera_xyz_m``: the camera's (E, N, height above ground), m; ``pixel_angle``: rad;
     ``cell_m``: the mosaic cell, m. The camera's pixel point-spread function
-    (:data:`PSF_SIGMA_PER_FOOTPRINT` of the footprint) and the cell's box in quadrature.
+    (:data:`PSF_SIGMA_PER_FOOTPRINT` of the footprint), the bilinear interpolation between
+    pixels (:data:`RESAMPLE_SIGMA_PER_FOOTPRINT`) and the cell's box in quadrature.
     """
     cx, cy, h = (float(v) for v in camera_xyz_m)
     x, y = np.asarray(x_m, dtype=float), np.asarray(y_m, dtype=float)
     rng = np.sqrt((x - cx) ** 2 + (y - cy) ** 2 + h**2)
     across = rng * pixel_angle
     along = across * rng / max(h, 1e-3)
-    pixel = PSF_SIGMA_PER_FOOTPRINT * np.sqrt(across * along)
+    pixel = np.hypot(PSF_SIGMA_PER_FOOTPRINT, RESAMPLE_SIGMA_PER_FOOTPRINT) \
+        * np.sqrt(across * along)
     return np.sqrt(pixel**2 + cell_m**2 / 12.0)
 
 

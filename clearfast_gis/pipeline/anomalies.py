@@ -21,11 +21,14 @@ from clearfast_gis.export.cog import mosaic_stack
 from clearfast_gis.export.manifest import read_products_manifest
 from clearfast_gis.export.products import write_anomaly_products
 from clearfast_gis.export.records import AnomalySet, suspect_records
+from clearfast_gis.mosaic.blur import survey_blur_sigma_m
 from clearfast_gis.pipeline import stages
 from clearfast_gis.pipeline.scanjob import scan_part
 from clearfast_gis.pipeline.stages import Characterisation, Detection, RunContext
 from clearfast_gis.pipeline.state import StageState
 from clearfast_gis.thermal import forcing_from_weather
+from clearfast_gis.thermal.apparent import apparent_gain, sky_band_radiance
+from clearfast_gis.thermal.canopy import under_canopy
 from clearfast_gis.thermal.daycontrast import (
     PEAK_LIFT_SIGMA,
     REFERENCE_RADIUS_M,
@@ -35,8 +38,10 @@ from clearfast_gis.thermal.daycontrast import (
     reference_curves,
 )
 from clearfast_gis.thermal.forcing import Forcing
+from clearfast_gis.thermal.forward import simulate_background
 from clearfast_gis.thermal.materials import Soil
 from clearfast_gis.thermal.sitesoil import characterise, site_soil
+from clearfast_gis.units import ZERO_CELSIUS_K
 
 
 def _mosaics_digest(mosaics: StageState, scans: list[int]) -> str:
@@ -114,8 +119,17 @@ def characterise_suspects(c: RunContext) -> Characterisation:
                                               c[stages.READ].grid.pixel_size)
     site = ctx.survey.manifest["site"]
     forcing, soil, alpha, sigma, canopy = _site(c, det.times_s, background)
+    band = ctx.survey.bands[0]
+    gain = apparent_gain(background + ZERO_CELSIUS_K,
+                         simulate_background(soil, under_canopy(forcing, canopy),
+                                             det.times_s).surface_k,
+                         band.lambda_min_um, band.lambda_max_um,
+                         sky_band_radiance(forcing, det.times_s, band.lambda_min_um,
+                                           band.lambda_max_um))
+    blur = survey_blur_sigma_m(ctx, [f.x for f in det.features], [f.y for f in det.features],
+                               c[stages.READ].grid.pixel_size)
     inversions = characterise(det.features, det.times_s, forcing, soil, progress=c.progress,
-                              canopy=canopy)
+                              canopy=canopy, gain=gain, blur_m=blur)
     noise = contrast_noise_k(inversions, ctx.survey, clutter_k)
     if any(f.core_contrast_k is not None for f in det.features):
         inversions = with_core_depths(inversions, characterise_cores(

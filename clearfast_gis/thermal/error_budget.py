@@ -15,17 +15,21 @@ simulated surveys (``benchmarks/contrast_gain.py``):
 ================================  ==============  =========================================
 term                              1 sigma         how it was measured
 ================================  ==============  =========================================
-gain: blur and registration       8 % of the      mosaic contrast against the truth
-(sensor, mosaic, sub-pixel        contrast        raster's at the mines' true positions,
-shifts between scans)                             slope per mine: 0.84 +- 0.08 (27 mines at
-                                                  0-5 cm, demo seeds 20-22 and the deep
-                                                  scenario's 20-22); the mean loss is
-                                                  modelled (footprint mean in the table),
-                                                  the spread is the term
-gain: band emissivity and         6 %             sand's band emissivity 0.84-0.97 and the
-Planck slope of the apparent                      Planck slope of the apparent contrast
-contrast
-offset: background ring           0.012 K         the same regression's intercepts (rms)
+gain: blur and registration       8 % of the      the mosaics' contrast curve of each mine
+(sensor, mosaic, sub-pixel        contrast        (at its detection) against the model's
+shifts between scans)                             curve at its true depth and diffusivity,
+                                                  through the modelled blur and gain: slope
+                                                  0.93 +- 0.03 (22 mines at 0-5 cm, demo
+                                                  seeds 3-6, ``benchmarks/chain_curve_gain.
+                                                  py``); the mean loss the model leaves and
+                                                  the spread, 0.075 rms
+gain: the estimated band          2 %             the moisture field's spread of the sand's
+emissivity (the apparent                          band emissivity around a mine (about
+contrast's gain is modelled,                      0.015); the estimate's own error against
+:mod:`~clearfast_gis.thermal.                     the twin's emissivity is not measured
+apparent`)                                        separately (the slope above holds it)
+offset: background ring           0.012 K         the disc-minus-ring regressions'
+                                                  intercepts on the truth rasters (rms)
 ================================  ==============  =========================================
 
 The propagation is linear. Where the fit's valley is flat in depth, a few per cent of gain
@@ -39,24 +43,20 @@ link at a time (BENCHMARKS.md, "Depth bias"; ``benchmarks/depth_bias.py``):
 ================================  =============  ==========================================
 term                              depth, cm      how it was measured
 ================================  =============  ==========================================
-object height (4-10 cm mines,     0.3            table built for 5 cm and 8 cm objects
-table at 8 cm)                                   against an 8 cm mine: 0.3-0.5 cm apart
-background ring (halo, texture)   0.1            ring at 1.5-2.5 radii against 5 cm beyond
-                                                 the halo
+object height (the table is the   0.1            tables for 5 and 8 cm objects against an
+mine type's; a mine of another                   8 cm mine: 0.3-0.5 cm for 3 cm of height
+height)
+background ring (texture; the     0.05           the modelled ring against a ring beyond
+halo is modelled)                                the halo on ideal curves: within 0.03 cm
 soil terms (diffusivity, surface  0.2            surface terms from the thermocouple
 fit, heat capacity)                              against the exact soil
-depth-proportional part           10 % of depth  deep, small objects trade depth for
-                                                 diffusivity: AP mines at 5-10 cm came out
-                                                 1-2 cm shallow from their true positions
-                                                 (truth rasters and mosaics alike)
+depth-proportional part           5 % of depth   the mine type against the modelled ring
+                                                 on ideal curves: within 0.11 cm at 1-7 cm
 ================================  =============  ==========================================
 
 Diffusivity: the soil's heat capacity is inferred from its diffusivity (+-10 %), 0.04 in
-log10 alpha; and the apparent contrast and the blur the footprint-mean table does not model,
-0.09 in log10 alpha: the chain's diffusivities of the 17 mines at 0-4 cm characterised on demo
-seeds 20-22 and the deep scenario's seeds 20-22 were 10^(0.085 +- 0.064) times the true ones
-(median 10^0.092; the truth rasters alone gave 1.20-1.22 times, the emissivity-weighted
-apparent contrast). It is a bias, not a spread: it is in the sigma until its cause is modelled.
+log10 alpha; and the measure's residual (the gain estimate, the blur model), 0.05 in log10
+alpha (docs/thermal.md, "Error budget").
 
 Without a Jacobian (an inversion made elsewhere) the curve terms cannot be propagated; the
 depth then carries the model terms only.
@@ -72,29 +72,31 @@ import numpy as np
 from clearfast_gis.thermal.inversion import MAX_DEPTH_SIGMA_M, Inversion
 from clearfast_gis.thermal.table import DEFAULT_DEPTHS_M
 
-GAIN_TERMS = {"blur_registration": 0.08, "emissivity_planck": 0.06}
+GAIN_TERMS = {"blur_registration": 0.08, "emissivity_estimate": 0.02}
 """1-sigma relative errors of the contrast curve's amplitude (module notes)."""
 
 OFFSET_TERM_K = 0.012
 """1-sigma error of the contrast curve's level, K (module notes)."""
 
-DEPTH_TERMS_M = {"object_height": 0.003, "background_ring": 0.001, "soil_terms": 0.002}
+DEPTH_TERMS_M = {"object_height": 0.001, "background_ring": 0.0005, "soil_terms": 0.002}
 """Constant 1-sigma depth terms of the model, m (module notes)."""
 
-DEPTH_RELATIVE = 0.10
+DEPTH_RELATIVE = 0.05
 """Depth-proportional 1-sigma term of the model, fraction of the estimated depth."""
 
-LOG10_ALPHA_TERMS = {"soil_heat_capacity": 0.04, "apparent_contrast_unmodelled": 0.09}
+LOG10_ALPHA_TERMS = {"soil_heat_capacity": 0.04, "measure_residual": 0.05}
 """1-sigma log10 diffusivity terms of the model (module notes)."""
 
 GAIN_TERM = math.sqrt(sum(v * v for v in GAIN_TERMS.values()))
 """The gain terms in quadrature."""
 
 
-def model_depth_variance(depth_m: float, relative: float = DEPTH_RELATIVE) -> float:
-    """The model's depth terms at ``depth_m`` (m) in quadrature: :data:`DEPTH_TERMS_M` and
-    ``relative`` times the depth, as a variance, m²."""
-    return sum(v * v for v in DEPTH_TERMS_M.values()) + (relative * max(depth_m, 0)) ** 2
+def model_depth_variance(depth_m: float, relative: float = DEPTH_RELATIVE,
+                         terms: dict[str, float] | None = None) -> float:
+    """The model's depth terms at ``depth_m`` (m) in quadrature: ``terms`` (m; default
+    :data:`DEPTH_TERMS_M`) and ``relative`` times the depth, as a variance, m²."""
+    const = DEPTH_TERMS_M if terms is None else terms
+    return sum(v * v for v in const.values()) + (relative * max(depth_m, 0)) ** 2
 
 
 def gain_sigma(extra_gain: float = 0.0) -> float:

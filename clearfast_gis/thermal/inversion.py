@@ -42,6 +42,10 @@ AMBIGUITY_DCHI2 = 4.0
 """A second local optimum at another depth whose chi-square is within this of the best one
 makes the estimate ambiguous (not characterised)."""
 
+PROFILE_STEPS = (201, 61)
+"""Depth and log10 alpha samples of the chi-square profile over the table's range
+(:func:`depth_profile_sigma`)."""
+
 MAX_MISFIT_RATIO = 3.0
 """Residual rms above this many noise sigmas: the cylinder model does not explain the data."""
 
@@ -118,6 +122,26 @@ def _local_minima(cost: np.ndarray, n: int) -> list[tuple[int, int]]:
     idx = np.argwhere(is_min)
     order = np.argsort(cost[is_min])[:n]
     return [tuple(idx[k]) for k in order]
+
+
+def depth_profile_sigma(spline, obs: np.ndarray, lo: np.ndarray, hi: np.ndarray,
+                        best_cost: float, s2: float) -> float:
+    """Half the width (m) of the depths whose profile chi-square lies within 1 of the best.
+
+    The profile ``chi2(d) = min over log10 alpha of sum((model - obs)^2) / s2`` is sampled on
+    :data:`PROFILE_STEPS` depths x diffusivities over the table's range ``lo..hi`` (depth m,
+    log10 alpha); the depths with ``chi2(d) - chi2_best <= 1`` (every branch, so a fit with
+    two depth branches spans both) give the interval. On a well-determined fit it equals the
+    covariance's sigma; on a flat one (the chi-square varying by less than 1 over centimetres)
+    it is the honest one. Shapes: ``obs`` (S,) K; ``spline`` maps (M, 2) to (M, S) K.
+    """
+    d = np.linspace(lo[0], hi[0], PROFILE_STEPS[0])
+    la = np.linspace(lo[1], hi[1], PROFILE_STEPS[1])
+    pts = np.stack(np.meshgrid(d, la, indexing="ij"), axis=-1).reshape(-1, 2)
+    cost = 0.5 * np.sum((spline(pts) - obs) ** 2, axis=-1).reshape(d.size, la.size)
+    dchi2 = 2.0 * (np.min(cost, axis=1) - min(best_cost, float(cost.min()))) / s2
+    inside = d[dchi2 <= 1.0]
+    return 0.5 * float(inside.max() - inside.min()) if inside.size else 0.0
 
 
 def invert_anomaly(
@@ -232,6 +256,10 @@ def invert_anomaly(
     if gain_sigma > 0:
         refits = np.array([_fits(spline, grid, obs, depths, la, 1.0 + k * gain_sigma)[0].x
                            for k in (1.0, -1.0)])
+    # a flat chi-square along the depth (a curve many depths explain): the covariance's
+    # local slope understates the depth's spread; the profile's interval does not
+    lo, hi = np.array([depths[0], la[0]]), np.array([depths[-1], la[-1]])
+    sig[0] = max(sig[0], depth_profile_sigma(spline, obs, lo, hi, float(best.cost), s2))
     model = spline(best.x[None, :])[0]
     peak = float(np.max(np.abs(model)))
     alpha = 10.0**lalpha

@@ -26,9 +26,10 @@ from clearfast_gis.thermal.error_budget import gain_sigma, with_chain_errors
 from clearfast_gis.thermal.forcing import Forcing
 from clearfast_gis.thermal.inversion import Inversion, invert_anomaly
 from clearfast_gis.thermal.materials import MATERIALS, Soil, get_soil
+from clearfast_gis.thermal.measure import anomaly_measure
 from clearfast_gis.thermal.soilfit import fit_soil_diffusivity, soil_log_field
 from clearfast_gis.thermal.surface_fit import fit_surface_balance, fit_surface_parameters
-from clearfast_gis.thermal.table import SiteTable, build_site_table
+from clearfast_gis.thermal.table import DEFAULT_HEIGHT_M, SiteTable, build_site_table
 from clearfast_gis.units import ZERO_CELSIUS_K
 
 SURFACE_SENSOR_MAX_DEPTH_M = 0.05
@@ -117,22 +118,22 @@ def first_band(series: np.ndarray) -> np.ndarray:
 
 
 def radius_nodes(radii_m: np.ndarray, max_nodes: int = 3) -> np.ndarray:
-    """A few object radii (m) spanning the anomalies', for the site table."""
+    """A few object radii (m) spanning ``radii_m``, for one site table of several radii."""
     r = np.clip(np.asarray(radii_m, dtype=float), 0.02, 0.25)
     if r.size == 0:
         return np.array([0.05])
-    q = np.unique(np.round(np.quantile(r, np.linspace(0, 1, max_nodes)), 2))
-    return q
+    return np.unique(np.round(np.quantile(r, np.linspace(0, 1, max_nodes)), 2))
 
 
 def chain_site_table(soil_forcing: Forcing, soil: Soil, radius_m, times_s: np.ndarray,
-                     canopy: float = 0.0) -> SiteTable:
+                     canopy: float = 0.0, height_m: float = DEFAULT_HEIGHT_M) -> SiteTable:
     """The chain's site table: disc means (:data:`CHAIN_TABLE_CENTRE`) of objects in ``soil``
     under ``soil_forcing`` (the weather under the site's canopy,
     :func:`clearfast_gis.thermal.canopy.under_canopy`), their contrast as seen through a
     canopy of cover ``canopy`` (times ``1 - canopy``). ``radius_m`` float or (Q,) m;
-    ``times_s`` (N,) UTC epoch s."""
-    table = build_site_table(soil_forcing, soil, radius_m, times_s, centre=CHAIN_TABLE_CENTRE)
+    ``times_s`` (N,) UTC epoch s; ``height_m`` the objects' height, m."""
+    table = build_site_table(soil_forcing, soil, radius_m, times_s, height_m=height_m,
+                             centre=CHAIN_TABLE_CENTRE)
     if canopy > 0:
         seen = seen_share(canopy)
         table = dataclasses.replace(table, contrast_k=seen * table.contrast_k,
@@ -141,9 +142,16 @@ def chain_site_table(soil_forcing: Forcing, soil: Soil, radius_m, times_s: np.nd
 
 
 def characterise(features: list[AnomalyFeatures], times_s: np.ndarray, forcing: Forcing,
-                 soil, progress: Progress = NULL_PROGRESS, canopy: float = 0.0
+                 soil, progress: Progress = NULL_PROGRESS, canopy: float = 0.0,
+                 gain: np.ndarray | None = None, blur_m: np.ndarray | None = None
                  ) -> dict[int, Inversion]:
-    """Depth and diffusivity of each anomaly with the thermal model (one site table).
+    """Depth and diffusivity of each anomaly with the thermal model.
+
+    Each anomaly is modelled as the expected mine type nearest its footprint's size, its
+    contrast taken as the chain measured it: the mean over its half-maximum footprint minus
+    the mean over its background ring (:func:`clearfast_gis.thermal.measure.anomaly_measure`),
+    through the mosaics' blur, times the apparent contrast's gain (one site table per mine
+    type).
 
     Parameters
     ----------
@@ -158,6 +166,12 @@ def characterise(features: list[AnomalyFeatures], times_s: np.ndarray, forcing: 
         Grass cover recorded for the site, 0-1: the objects lie under it and their contrast
         is seen times ``1 - canopy`` (:mod:`clearfast_gis.thermal.canopy`), a gain uncertain
         by :func:`~clearfast_gis.thermal.canopy.cover_gain_sigma` (in the sigmas).
+    gain : float (N,), optional
+        Per-scan factor from the kinetic to the apparent contrast
+        (:func:`clearfast_gis.thermal.apparent.apparent_gain`); 1 when omitted.
+    blur_m : float (K,), optional
+        Gaussian sigma of the mosaics' blur at each feature, m
+        (:func:`clearfast_gis.mosaic.blur.survey_blur_sigma_m`); 0 when omitted.
 
     Returns
     -------
@@ -169,24 +183,38 @@ def characterise(features: list[AnomalyFeatures], times_s: np.ndarray, forcing: 
     """
     if not features:
         return {}
-    radii = np.array([0.5 * f.diameter_m for f in features])
-    nodes = radius_nodes(radii)
-    progress.message(f"thermal model table for radii {', '.join(f'{r:.2f}' for r in nodes)} m")
+    measures = [anomaly_measure(f) for f in features]
+    blur = np.zeros(len(features)) if blur_m is None else np.asarray(blur_m, dtype=float)
     forcing = under_canopy(forcing, canopy)
-    table = chain_site_table(forcing, soil, nodes if nodes.size > 1 else float(nodes[0]),
-                             times_s, canopy)
+    tables: dict = {}
+    for kind in sorted({m.kind for m in measures if m.kind is not None},
+                       key=lambda k: k.diameter_m):
+        progress.message(f"thermal model table for {kind.name} ({kind.diameter_m:.3f} m)")
+        tables[kind] = chain_site_table(forcing, soil, kind.radius_m, times_s, canopy,
+                                        kind.height_m)
+    others = [m.radius_m for m in measures if m.kind is None and m.radius_m > 0]
+    if others:  # footprints of no mine type's size: cylinders of the footprint's radius
+        nodes = radius_nodes(np.array(others))
+        progress.message("thermal model table for radii "
+                         f"{', '.join(f'{r:.2f}' for r in nodes)} m")
+        tables[None] = chain_site_table(forcing, soil, nodes if nodes.size > 1
+                                        else float(nodes[0]), times_s, canopy)
+        lo, hi = float(nodes.min()), float(nodes.max())
+        measures = [m if m.kind is not None else
+                    dataclasses.replace(m, radius_m=float(np.clip(m.radius_m, lo, hi)))
+                    for m in measures]
     extra = cover_gain_sigma(canopy)
     out: dict[int, Inversion] = {}
     progress.start("characterise", len(features))
-    for f, r in zip(features, radii, strict=True):
+    for f, m, b in zip(features, measures, blur, strict=True):
         centre = first_band(f.centre_k) + ZERO_CELSIUS_K
         ring = first_band(f.ring_k) + ZERO_CELSIUS_K
-        r_tab = float(np.clip(r, nodes.min(), nodes.max()))
-        if (np.isfinite(centre) & np.isfinite(ring)).sum() >= 4:
-            out[f.id] = with_chain_errors(invert_anomaly(times_s, centre, ring, forcing, soil,
-                                                         r_tab, table=table,
-                                                         gain_sigma=gain_sigma(extra)),
-                                          extra)
+        if (np.isfinite(centre) & np.isfinite(ring)).sum() >= 4 and m.over_m > 0:
+            inv = invert_anomaly(times_s, centre, ring, forcing, soil, m.radius_m,
+                                 table=tables[m.kind], over_m=m.over_m, ring_m=m.ring_m,
+                                 blur_m=float(b) if np.isfinite(b) else 0.0, gain=gain,
+                                 gain_sigma=gain_sigma(extra))
+            out[f.id] = with_chain_errors(inv, extra)
         progress.advance()
     progress.close()
     return out

@@ -41,7 +41,7 @@ def _observe(forcing, scans, depth_m, material, seed=0):
 
 
 def test_gain_sigma_is_the_terms_in_quadrature():
-    assert gain_sigma() == pytest.approx(GAIN_TERM) == pytest.approx(math.hypot(0.08, 0.06))
+    assert gain_sigma() == pytest.approx(GAIN_TERM) == pytest.approx(math.hypot(0.08, 0.02))
     assert gain_sigma(0.2) == pytest.approx(math.hypot(GAIN_TERM, 0.2))
 
 
