@@ -64,9 +64,8 @@ DISC_RING_GAIN_SIGMA = 0.125
 
 #: The model's depth-proportional 1-sigma term of the shape fit: the site soil's diffusivity,
 #: uncertain by about 10 %, sets the diurnal wave's damping depth, which goes as its square
-#: root (5 % of the depth). The general inversion's 10 %
-#: (:data:`clearfast_gis.thermal.error_budget.DEPTH_RELATIVE`) is its trade of depth against
-#: the object's diffusivity, which the shape fit does not make (the fill is assumed).
+#: root (5 % of the depth), as in the general inversion
+#: (:data:`clearfast_gis.thermal.error_budget.DEPTH_RELATIVE`).
 SHAPE_DEPTH_RELATIVE = 0.05
 
 #: The shape fit's constant 1-sigma depth terms, m. Its template is the reference AP mine's

@@ -7,7 +7,8 @@ into the estimates. Two kinds of chain terms are added in quadrature:
 
 **Errors of the curve, propagated through the fit.** A systematic error ``delta_c`` (K, one
 value per scan) of the contrast curve moves the estimates by ``(J^T J)^-1 J^T delta_c``, with
-``J`` the fit's own Jacobian at the estimate (:attr:`Inversion.jacobian`): the same error
+``J`` the fit's own Jacobian at the estimate (:attr:`Inversion.jacobian`; ``J^T J`` plus the
+prior's term :attr:`Inversion.prior_normal` for a fit with a prior): the same error
 costs a weak (deep) object's estimate much more than a strong one's, and how much depends on
 when the survey's scans sample the day. Three such errors, each measured as 1 sigma on
 simulated surveys (``benchmarks/contrast_gain.py``):
@@ -106,7 +107,8 @@ def gain_sigma(extra_gain: float = 0.0) -> float:
 
 
 def curve_term_shifts(jacobian: np.ndarray, model_k: np.ndarray,
-                      extra_gain: float = 0.0) -> np.ndarray:
+                      extra_gain: float = 0.0, prior_normal: np.ndarray | None = None
+                      ) -> np.ndarray:
     """1-sigma shifts of (depth m, log10 alpha) from the curve terms, through the fit.
 
     Parameters
@@ -115,6 +117,9 @@ def curve_term_shifts(jacobian: np.ndarray, model_k: np.ndarray,
         d contrast / d (depth m, log10 alpha) at the estimate, K/m and K.
     model_k : ndarray, shape (S,)
         Modelled contrast at the estimate, K.
+    prior_normal : ndarray, shape (2, 2), optional
+        The fit's prior term of its normal matrix (:attr:`Inversion.prior_normal`): a curve
+        error moves a penalised fit's estimates by ``(J^T J + prior_normal)^-1 J^T delta_c``.
 
     Returns
     -------
@@ -127,14 +132,14 @@ def curve_term_shifts(jacobian: np.ndarray, model_k: np.ndarray,
     gain = gain_sigma(extra_gain)
     curves = np.stack([gain * np.asarray(model_k, dtype=float),
                        np.full(j.shape[0], OFFSET_TERM_K)], axis=1)
-    jtj = j.T @ j
+    jtj = j.T @ j if prior_normal is None else j.T @ j + np.asarray(prior_normal, float)
     if not np.all(np.isfinite(jtj)) or np.linalg.cond(jtj) > 1e12:
         return np.full((2, 2), np.inf)
     return np.linalg.solve(jtj, j.T @ curves).T
 
 
-def chain_sigmas(inv: Inversion, extra_gain: float = 0.0, refits: bool = True
-                 ) -> tuple[float, float]:
+def chain_sigmas(inv: Inversion, extra_gain: float = 0.0, refits: bool = True,
+                 prior: bool = True) -> tuple[float, float]:
     """The chain's 1-sigma (depth m, log10 alpha) error of ``inv``: every term of the module
     notes in quadrature, the curve terms through ``inv``'s own Jacobian; ``extra_gain``: a
     further relative gain error of the curve (a canopy's seen share,
@@ -143,11 +148,14 @@ def chain_sigmas(inv: Inversion, extra_gain: float = 0.0, refits: bool = True
     When ``inv`` was fitted again with the gain off by +- 1 sigma (:attr:`Inversion.gain_refits`,
     the same ``extra_gain``), the gain term's shift is the larger of the propagated one and
     the refits' largest move: a flat valley's jump to another branch counts in full
-    (``refits=False``: the propagated shift alone)."""
+    (``refits=False``: the propagated shift alone). ``prior=False``: propagated as if the fit
+    had no prior on the diffusivity (the curve's own diffusivity,
+    :attr:`Inversion.curve_alpha_m2s`)."""
     sd2 = model_depth_variance(inv.depth_m)
     sa2 = sum(v * v for v in LOG10_ALPHA_TERMS.values())
     if inv.jacobian is not None:
-        shifts = np.abs(curve_term_shifts(inv.jacobian, inv.model_contrast_k, extra_gain))
+        shifts = np.abs(curve_term_shifts(inv.jacobian, inv.model_contrast_k, extra_gain,
+                                          inv.prior_normal if prior else None))
         if refits and inv.gain_refits is not None:
             moved = np.max(np.abs(inv.gain_refits - [inv.depth_m, math.log10(inv.alpha_m2s)]),
                            axis=0)
@@ -171,13 +179,20 @@ def with_chain_errors(inv: Inversion, extra_gain: float = 0.0) -> Inversion:
     exceeds :data:`~clearfast_gis.thermal.inversion.MAX_DEPTH_SIGMA_M`. ``fit_status`` is the
     status the propagated terms alone give (without the gain refits' moves): whether the
     curve is well explained by a buried object, which the mine likelihood reads, apart from
-    whether its depth survives a gain error.
+    whether its depth survives a gain error. The curve's own diffusivity of a fit with a prior
+    (:attr:`Inversion.curve_alpha_m2s`) takes the propagated terms as if there were none.
     """
     chain_d, chain_la = chain_sigmas(inv, extra_gain)
     sd = _capped(math.hypot(inv.depth_sigma_m, chain_d))
     sla = math.hypot(inv.log10_alpha_sigma, chain_la)
     linear_sd = _capped(math.hypot(inv.depth_sigma_m, chain_sigmas(inv, extra_gain, False)[0]))
+    curve_sigma = inv.curve_alpha_sigma_m2s
+    if inv.curve_alpha_m2s is not None and curve_sigma is not None:
+        fit_la = curve_sigma / (inv.curve_alpha_m2s * math.log(10.0))
+        curve_sigma = inv.curve_alpha_m2s * math.log(10.0) * math.hypot(
+            fit_la, chain_sigmas(inv, extra_gain, False, False)[1])
     return dataclasses.replace(inv, depth_sigma_m=sd, log10_alpha_sigma=sla,
+                               curve_alpha_sigma_m2s=curve_sigma,
                                alpha_sigma_m2s=inv.alpha_m2s * math.log(10.0) * sla,
                                status=_flagged(inv.status, sd),
                                fit_status=_flagged(inv.status, linear_sd))

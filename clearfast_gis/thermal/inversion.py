@@ -91,6 +91,14 @@ class Inversion:
     fit_status : str, optional
         The status without the gain refits' moves
         (:func:`clearfast_gis.thermal.error_budget.with_chain_errors`); None: as ``status``.
+    prior_normal : ndarray, shape (2, 2), optional
+        What the diffusivity prior adds to ``jacobian.T @ jacobian`` (K² per unit of the
+        parameters): ``s2 / sigma²`` on log10 alpha, ``s2`` the residual variance the fit
+        was weighed with (:func:`invert_anomaly` ``alpha_prior``). None without a prior.
+    curve_alpha_m2s, curve_alpha_sigma_m2s : float, optional
+        With a prior: the diffusivity of the fit without it (the curve's own) and its
+        1-sigma, m2 s-1 (:attr:`diffusivity_m2s`). ``alpha_m2s`` is then the penalised fit's,
+        whose depth is the estimate. None without a prior.
     """
 
     depth_m: float
@@ -107,6 +115,22 @@ class Inversion:
     jacobian: np.ndarray | None = field(default=None, compare=False)
     gain_refits: np.ndarray | None = field(default=None, compare=False)
     fit_status: str | None = None
+    prior_normal: np.ndarray | None = field(default=None, compare=False)
+    curve_alpha_m2s: float | None = None
+    curve_alpha_sigma_m2s: float | None = None
+
+    @property
+    def diffusivity_m2s(self) -> float:
+        """The object's diffusivity as the curve alone gives it, m2 s-1: ``curve_alpha_m2s``
+        when the fit had a prior, else ``alpha_m2s`` (what the products report and the
+        material cue reads: a prior must not make an object look like a mine)."""
+        return self.alpha_m2s if self.curve_alpha_m2s is None else self.curve_alpha_m2s
+
+    @property
+    def diffusivity_sigma_m2s(self) -> float:
+        """1-sigma of :attr:`diffusivity_m2s`, m2 s-1."""
+        return self.alpha_sigma_m2s if self.curve_alpha_sigma_m2s is None \
+            else self.curve_alpha_sigma_m2s
 
 
 def _local_minima(cost: np.ndarray, n: int) -> list[tuple[int, int]]:
@@ -125,7 +149,8 @@ def _local_minima(cost: np.ndarray, n: int) -> list[tuple[int, int]]:
 
 
 def depth_profile_sigma(spline, obs: np.ndarray, lo: np.ndarray, hi: np.ndarray,
-                        best_cost: float, s2: float) -> float:
+                        best_cost: float, s2: float,
+                        prior: tuple[float, float, float] | None = None) -> float:
     """Half the width (m) of the depths whose profile chi-square lies within 1 of the best.
 
     The profile ``chi2(d) = min over log10 alpha of sum((model - obs)^2) / s2`` is sampled on
@@ -134,11 +159,14 @@ def depth_profile_sigma(spline, obs: np.ndarray, lo: np.ndarray, hi: np.ndarray,
     two depth branches spans both) give the interval. On a well-determined fit it equals the
     covariance's sigma; on a flat one (the chi-square varying by less than 1 over centimetres)
     it is the honest one. Shapes: ``obs`` (S,) K; ``spline`` maps (M, 2) to (M, S) K.
+    ``prior``: (mean, 1 sigma of log10 alpha, weight K²) of :func:`_fits`, whose penalty is
+    part of the profile (and of ``best_cost``).
     """
     d = np.linspace(lo[0], hi[0], PROFILE_STEPS[0])
     la = np.linspace(lo[1], hi[1], PROFILE_STEPS[1])
     pts = np.stack(np.meshgrid(d, la, indexing="ij"), axis=-1).reshape(-1, 2)
     cost = 0.5 * np.sum((spline(pts) - obs) ** 2, axis=-1).reshape(d.size, la.size)
+    cost = cost + _penalty(la, prior)[None, :]
     dchi2 = 2.0 * (np.min(cost, axis=1) - min(best_cost, float(cost.min()))) / s2
     inside = d[dchi2 <= 1.0]
     return 0.5 * float(inside.max() - inside.min()) if inside.size else 0.0
@@ -159,6 +187,7 @@ def invert_anomaly(
     blur_m: float = 0.0,
     gain: ArrayLike | None = None,
     gain_sigma: float = 0.0,
+    alpha_prior: tuple[float, float] | None = None,
 ) -> Inversion:
     """Estimate burial depth and diffusivity of one anomaly.
 
@@ -205,6 +234,14 @@ def invert_anomaly(
         (:attr:`Inversion.gain_refits`): where the fit's valley is flat in depth, a small
         gain error moves the estimate onto another branch, which the error propagated
         through the Jacobian at the estimate does not show.
+    alpha_prior : (float, float), optional
+        (mean, 1 sigma) of the object's log10 diffusivity (m2 s-1) before the curve is seen
+        (the chain's: :data:`clearfast_gis.thermal.materials.MINE_FILL_LOG10_ALPHA`). The
+        curve is fitted without it first, for the residual variance ``s2``; then again with
+        ``s2 ((log10 alpha - mean) / sigma)²`` added to the squared residuals: where the
+        chi-square is flat along the depth-diffusivity trade (a few scans), the prior picks
+        the depth; where the curve determines the diffusivity, the curve does. Depth sigma,
+        covariance, rivals and gain refits are all of the penalised fit.
 
     Returns
     -------
@@ -233,20 +270,30 @@ def invert_anomaly(
     depths, la = table.depths_m, table.log10_alpha
     spline = contrast_spline(depths, la, grid)
     fits = _fits(spline, grid, obs, depths, la)
-    best = fits[0]
-    d, lalpha = best.x
-    r = best.fun
+    r = fits[0].fun
     n, p = r.size, 2
-    rms = float(np.sqrt(np.mean(r**2)))
     # scan-to-scan residuals of a smooth model misfit are correlated: inflate the variance
     # for lag-1 autocorrelation (as the soil fit does), else 48 scans claim 0.1 cm
     s2 = float(np.sum(r**2)) / max(n - p, 1) * ar1_inflation(r[:, None])
-    noise = rms if noise_k is None else float(noise_k)
+    noise = float(np.sqrt(np.mean(r**2))) if noise_k is None else float(noise_k)
     if noise_k is not None:
         s2 = max(s2, noise**2)
-    jm = best.jac
+    prior = None if alpha_prior is None else (float(alpha_prior[0]), float(alpha_prior[1]),
+                                              max(s2, 1e-12))
+    curve_alpha = curve_sigma = None
+    if prior is not None:
+        curve_alpha, curve_sigma = _alpha_and_sigma(fits[0], s2)
+        fits = _fits(spline, grid, obs, depths, la, prior=prior)
+    best = fits[0]
+    d, lalpha = best.x
+    r = best.fun[:n]
+    rms = float(np.sqrt(np.mean(r**2)))
+    if noise_k is None:
+        noise = rms
+    jm = best.jac[:n]
+    prior_normal = None if prior is None else np.diag([0.0, prior[2] / prior[1] ** 2])
     try:
-        cov = np.linalg.inv(jm.T @ jm) * s2
+        cov = np.linalg.inv(jm.T @ jm + (0.0 if prior_normal is None else prior_normal)) * s2
         sig = np.sqrt(np.clip(np.diag(cov), 0, None))
         corr = float(cov[0, 1] / (sig[0] * sig[1])) if sig.all() else 0.0
     except np.linalg.LinAlgError:
@@ -254,12 +301,13 @@ def invert_anomaly(
         corr = 0.0
     refits = None
     if gain_sigma > 0:
-        refits = np.array([_fits(spline, grid, obs, depths, la, 1.0 + k * gain_sigma)[0].x
-                           for k in (1.0, -1.0)])
+        refits = np.array([_fits(spline, grid, obs, depths, la, 1.0 + k * gain_sigma,
+                                 prior)[0].x for k in (1.0, -1.0)])
     # a flat chi-square along the depth (a curve many depths explain): the covariance's
     # local slope understates the depth's spread; the profile's interval does not
     lo, hi = np.array([depths[0], la[0]]), np.array([depths[-1], la[-1]])
-    sig[0] = max(sig[0], depth_profile_sigma(spline, obs, lo, hi, float(best.cost), s2))
+    sig[0] = max(sig[0], depth_profile_sigma(spline, obs, lo, hi, float(best.cost), s2,
+                                             prior))
     model = spline(best.x[None, :])[0]
     peak = float(np.max(np.abs(model)))
     alpha = 10.0**lalpha
@@ -290,28 +338,54 @@ def invert_anomaly(
         log10_alpha_sigma=float(sig[1]), status=status, residual_rms_k=rms, noise_k=noise,
         peak_contrast_k=peak, correlation=corr, model_contrast_k=model,
         jacobian=np.asarray(jm, dtype=float), gain_refits=refits,
+        prior_normal=prior_normal, curve_alpha_m2s=curve_alpha,
+        curve_alpha_sigma_m2s=curve_sigma,
     )
 
 
+def _alpha_and_sigma(fit, s2: float) -> tuple[float, float]:
+    """Diffusivity (m2 s-1) of a least-squares ``fit`` of (depth, log10 alpha) and its
+    1-sigma from the fit's covariance ``(J^T J)^-1 s2`` (infinite when singular)."""
+    alpha = float(10.0 ** fit.x[1])
+    try:
+        var = float(np.linalg.inv(fit.jac.T @ fit.jac)[1, 1]) * s2
+    except np.linalg.LinAlgError:
+        return alpha, float("inf")
+    return alpha, float(alpha * np.log(10.0) * np.sqrt(max(var, 0.0)))
+
+
+def _penalty(log10_alpha: np.ndarray, prior: tuple[float, float, float] | None) -> np.ndarray:
+    """Half the prior's squared residual at ``log10_alpha``, K² (0 without a prior)."""
+    if prior is None:
+        return np.zeros(np.shape(log10_alpha))
+    mean, sigma, weight = prior
+    return 0.5 * weight * ((np.asarray(log10_alpha, dtype=float) - mean) / sigma) ** 2
+
+
 def _fits(spline, grid: np.ndarray, obs: np.ndarray, depths: np.ndarray, la: np.ndarray,
-          scale: float = 1.0) -> list:
+          scale: float = 1.0, prior: tuple[float, float, float] | None = None) -> list:
     """Bounded least-squares fits of ``scale`` times the table's contrast to ``obs``, one
     from each of the (up to 4) lowest local minima of the table's cost grid, best first.
 
     ``spline`` interpolates ``grid`` (depth x log10 alpha x scans, K) over the nodes
     ``depths`` (m) and ``la`` (log10 m2/s); ``obs`` (S,) is the measured contrast, K.
-    Returns scipy ``OptimizeResult`` objects (``x`` = (depth m, log10 alpha)).
+    ``prior``: (mean, sigma, weight K²) of log10 alpha: a last residual
+    ``sqrt(weight) (log10 alpha - mean) / sigma`` is appended (``fun`` and ``jac`` have
+    S + 1 rows). Returns scipy ``OptimizeResult`` objects (``x`` = (depth m, log10 alpha)).
     """
     lo, hi = np.array([depths[0], la[0]]), np.array([depths[-1], la[-1]])
+    w = 0.0 if prior is None else float(np.sqrt(prior[2]) / prior[1])
 
     def resid(p: np.ndarray) -> np.ndarray:
-        return scale * spline(p[None, :])[0] - obs
+        r = scale * spline(p[None, :])[0] - obs
+        return r if prior is None else np.append(r, w * (p[1] - prior[0]))
 
     def jac(p: np.ndarray) -> np.ndarray:
         x = p[None, :]
-        return scale * np.stack([spline(x, nu=(1, 0))[0], spline(x, nu=(0, 1))[0]], axis=1)
+        j = scale * np.stack([spline(x, nu=(1, 0))[0], spline(x, nu=(0, 1))[0]], axis=1)
+        return j if prior is None else np.vstack([j, [0.0, w]])
 
-    cost = np.sum((scale * grid - obs) ** 2, axis=-1)
+    cost = np.sum((scale * grid - obs) ** 2, axis=-1) + 2.0 * _penalty(la, prior)[None, :]
     span = hi - lo
     fits = []
     for i, j in _local_minima(cost, 4):

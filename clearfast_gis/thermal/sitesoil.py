@@ -25,7 +25,7 @@ from clearfast_gis.thermal.canopy import cover_gain_sigma, seen_share, under_can
 from clearfast_gis.thermal.error_budget import gain_sigma, with_chain_errors
 from clearfast_gis.thermal.forcing import Forcing
 from clearfast_gis.thermal.inversion import Inversion, invert_anomaly
-from clearfast_gis.thermal.materials import MATERIALS, Soil, get_soil
+from clearfast_gis.thermal.materials import MATERIALS, MINE_FILL_LOG10_ALPHA, Soil, get_soil
 from clearfast_gis.thermal.measure import anomaly_measure
 from clearfast_gis.thermal.soilfit import fit_soil_diffusivity, soil_log_field
 from clearfast_gis.thermal.surface_fit import fit_surface_balance, fit_surface_parameters
@@ -213,7 +213,8 @@ def characterise(features: list[AnomalyFeatures], times_s: np.ndarray, forcing: 
             inv = invert_anomaly(times_s, centre, ring, forcing, soil, m.radius_m,
                                  table=tables[m.kind], over_m=m.over_m, ring_m=m.ring_m,
                                  blur_m=float(b) if np.isfinite(b) else 0.0, gain=gain,
-                                 gain_sigma=gain_sigma(extra))
+                                 gain_sigma=gain_sigma(extra),
+                                 alpha_prior=MINE_FILL_LOG10_ALPHA)
             out[f.id] = with_chain_errors(inv, extra)
         progress.advance()
     progress.close()

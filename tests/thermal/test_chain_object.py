@@ -36,9 +36,10 @@ def mean_over(prof, a, b):
     return (prof[:, sel] * w).sum(axis=1) / w.sum()
 
 
-def anomaly(forcing, times, depth_m, ident):
-    """The features of an AP mine at ``depth_m`` as the detector would give them."""
-    run = thermal.simulate_object(SOIL, thermal.BuriedObject(AP.radius_m, AP.height_m, depth_m,
+def anomaly(forcing, times, depth_m, ident, soil=SOIL):
+    """The features of an AP mine at ``depth_m`` in ``soil`` as the detector would give
+    them."""
+    run = thermal.simulate_object(soil, thermal.BuriedObject(AP.radius_m, AP.height_m, depth_m,
                                                              TNT), forcing, times,
                                   radii_m=RADII_M)
     prof = GAIN * (np.asarray(run.surface_k) - np.asarray(run.background_k)[:, None])
