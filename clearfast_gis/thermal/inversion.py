@@ -275,9 +275,8 @@ def invert_anomaly(
     # scan-to-scan residuals of a smooth model misfit are correlated: inflate the variance
     # for lag-1 autocorrelation (as the soil fit does), else 48 scans claim 0.1 cm
     s2 = float(np.sum(r**2)) / max(n - p, 1) * ar1_inflation(r[:, None])
-    noise = float(np.sqrt(np.mean(r**2))) if noise_k is None else float(noise_k)
     if noise_k is not None:
-        s2 = max(s2, noise**2)
+        s2 = max(s2, float(noise_k) ** 2)
     prior = None if alpha_prior is None else (float(alpha_prior[0]), float(alpha_prior[1]),
                                               max(s2, 1e-12))
     curve_alpha = curve_sigma = None
@@ -288,17 +287,16 @@ def invert_anomaly(
     d, lalpha = best.x
     r = best.fun[:n]
     rms = float(np.sqrt(np.mean(r**2)))
-    if noise_k is None:
-        noise = rms
+    noise = rms if noise_k is None else float(noise_k)
     jm = best.jac[:n]
     prior_normal = None if prior is None else np.diag([0.0, prior[2] / prior[1] ** 2])
-    try:
-        cov = np.linalg.inv(jm.T @ jm + (0.0 if prior_normal is None else prior_normal)) * s2
-        sig = np.sqrt(np.clip(np.diag(cov), 0, None))
-        corr = float(cov[0, 1] / (sig[0] * sig[1])) if sig.all() else 0.0
-    except np.linalg.LinAlgError:
+    cov = _covariance(jm, s2, prior_normal)
+    if cov is None:
         sig = np.array([np.inf, np.inf])
         corr = 0.0
+    else:
+        sig = np.sqrt(np.clip(np.diag(cov), 0, None))
+        corr = float(cov[0, 1] / (sig[0] * sig[1])) if sig.all() else 0.0
     refits = None
     if gain_sigma > 0:
         refits = np.array([_fits(spline, grid, obs, depths, la, 1.0 + k * gain_sigma,
@@ -343,15 +341,26 @@ def invert_anomaly(
     )
 
 
-def _alpha_and_sigma(fit, s2: float) -> tuple[float, float]:
-    """Diffusivity (m2 s-1) of a least-squares ``fit`` of (depth, log10 alpha) and its
-    1-sigma from the fit's covariance ``(J^T J)^-1 s2`` (infinite when singular)."""
-    alpha = float(10.0 ** fit.x[1])
+def _covariance(jac: np.ndarray, s2: float, prior_normal: np.ndarray | None = None
+                ) -> np.ndarray | None:
+    """Covariance (2, 2) of (depth m, log10 alpha): ``(J^T J + prior_normal)^-1 s2`` with
+    ``jac`` (S, 2) the fit's Jacobian and ``s2`` its residual variance, K²; None when
+    singular."""
+    jtj = jac.T @ jac if prior_normal is None else jac.T @ jac + prior_normal
     try:
-        var = float(np.linalg.inv(fit.jac.T @ fit.jac)[1, 1]) * s2
+        return np.linalg.inv(jtj) * s2
     except np.linalg.LinAlgError:
+        return None
+
+
+def _alpha_and_sigma(fit, s2: float) -> tuple[float, float]:
+    """Diffusivity (m2 s-1) of a least-squares ``fit`` of (depth, log10 alpha) without a
+    prior and its 1-sigma from the fit's covariance (infinite when singular)."""
+    alpha = float(10.0 ** fit.x[1])
+    cov = _covariance(fit.jac, s2)
+    if cov is None:
         return alpha, float("inf")
-    return alpha, float(alpha * np.log(10.0) * np.sqrt(max(var, 0.0)))
+    return alpha, float(alpha * np.log(10.0) * np.sqrt(max(float(cov[1, 1]), 0.0)))
 
 
 def _penalty(log10_alpha: np.ndarray, prior: tuple[float, float, float] | None) -> np.ndarray:
