@@ -179,13 +179,22 @@ def with_chain_errors(inv: Inversion, extra_gain: float = 0.0) -> Inversion:
     exceeds :data:`~clearfast_gis.thermal.inversion.MAX_DEPTH_SIGMA_M`. ``fit_status`` is the
     status the propagated terms alone give (without the gain refits' moves): whether the
     curve is well explained by a buried object, which the mine likelihood reads, apart from
-    whether its depth survives a gain error. The curve's own diffusivity of a fit with a prior
-    (:attr:`Inversion.curve_alpha_m2s`) takes the propagated terms as if there were none.
+    whether its depth survives a gain error. For a fit with a prior it is the curve's own
+    (:attr:`Inversion.curve_status`, its depth sigma and the terms propagated as if there
+    were no prior, through the penalised fit's Jacobian): the prior is a mine's diffusivity,
+    and what the likelihood weighs must not assume a mine. The curve's own diffusivity
+    (:attr:`Inversion.curve_alpha_m2s`) likewise takes the propagated terms as if there were
+    no prior.
     """
     chain_d, chain_la = chain_sigmas(inv, extra_gain)
     sd = _capped(math.hypot(inv.depth_sigma_m, chain_d))
     sla = math.hypot(inv.log10_alpha_sigma, chain_la)
-    linear_sd = _capped(math.hypot(inv.depth_sigma_m, chain_sigmas(inv, extra_gain, False)[0]))
+    if inv.curve_status is None:
+        fit_status = _flagged(inv.status, _capped(math.hypot(
+            inv.depth_sigma_m, chain_sigmas(inv, extra_gain, False)[0])))
+    else:
+        fit_status = _flagged(inv.curve_status, _capped(math.hypot(
+            inv.curve_depth_sigma_m, chain_sigmas(inv, extra_gain, False, False)[0])))
     curve_sigma = inv.curve_alpha_sigma_m2s
     if inv.curve_alpha_m2s is not None and curve_sigma is not None:
         fit_la = curve_sigma / (inv.curve_alpha_m2s * math.log(10.0))
@@ -195,7 +204,7 @@ def with_chain_errors(inv: Inversion, extra_gain: float = 0.0) -> Inversion:
                                curve_alpha_sigma_m2s=curve_sigma,
                                alpha_sigma_m2s=inv.alpha_m2s * math.log(10.0) * sla,
                                status=_flagged(inv.status, sd),
-                               fit_status=_flagged(inv.status, linear_sd))
+                               fit_status=fit_status)
 
 
 def _capped(sigma_m: float) -> float:

@@ -99,6 +99,13 @@ class Inversion:
         With a prior: the diffusivity of the fit without it (the curve's own) and its
         1-sigma, m2 s-1 (:attr:`diffusivity_m2s`). ``alpha_m2s`` is then the penalised fit's,
         whose depth is the estimate. None without a prior.
+    curve_status : str, optional
+        With a prior: the status the fit without it gives (the same rules as ``status``):
+        whether the curve alone is explained by a buried object, which the mine likelihood
+        reads (``fit_status``); the prior assumes a mine, so it must not vouch for one.
+        None without a prior.
+    curve_depth_sigma_m : float, optional
+        With a prior: the depth's 1-sigma of the fit without it, m. None without a prior.
     """
 
     depth_m: float
@@ -118,6 +125,8 @@ class Inversion:
     prior_normal: np.ndarray | None = field(default=None, compare=False)
     curve_alpha_m2s: float | None = None
     curve_alpha_sigma_m2s: float | None = None
+    curve_status: str | None = None
+    curve_depth_sigma_m: float | None = None
 
     @property
     def diffusivity_m2s(self) -> float:
@@ -279,17 +288,74 @@ def invert_anomaly(
         s2 = max(s2, float(noise_k) ** 2)
     prior = None if alpha_prior is None else (float(alpha_prior[0]), float(alpha_prior[1]),
                                               max(s2, 1e-12))
-    curve_alpha = curve_sigma = None
-    if prior is not None:
-        curve_alpha, curve_sigma = _alpha_and_sigma(fits[0], s2)
+    curve = None
+    if prior is not None:  # the curve alone first: its diffusivity and status
+        curve = _judged(fits, spline, obs, depths, la, s2, noise_k, n)
         fits = _fits(spline, grid, obs, depths, la, prior=prior)
+    prior_normal = None if prior is None else np.diag([0.0, prior[2] / prior[1] ** 2])
+    best = _judged(fits, spline, obs, depths, la, s2, noise_k, n, prior, prior_normal)
+    d, lalpha = best.fit.x
+    sig = best.sigma
+    refits = None
+    if gain_sigma > 0:
+        refits = np.array([_fits(spline, grid, obs, depths, la, 1.0 + k * gain_sigma,
+                                 prior)[0].x for k in (1.0, -1.0)])
+    alpha = 10.0**lalpha
+    return Inversion(
+        depth_m=float(d), depth_sigma_m=float(sig[0]), alpha_m2s=float(alpha),
+        alpha_sigma_m2s=float(alpha * np.log(10.0) * sig[1]),
+        log10_alpha_sigma=float(sig[1]), status=best.status, residual_rms_k=best.rms_k,
+        noise_k=best.noise_k, peak_contrast_k=best.peak_k, correlation=best.correlation,
+        model_contrast_k=best.model_k, jacobian=best.jacobian, gain_refits=refits,
+        prior_normal=prior_normal,
+        curve_alpha_m2s=None if curve is None else curve.alpha_m2s,
+        curve_alpha_sigma_m2s=None if curve is None else curve.alpha_sigma_m2s,
+        curve_status=None if curve is None else curve.status,
+        curve_depth_sigma_m=None if curve is None else float(curve.sigma[0]),
+    )
+
+
+@dataclass(frozen=True)
+class _Judged:
+    """The best of a set of fits, its sigmas and status (:func:`_judged`)."""
+
+    fit: object
+    sigma: np.ndarray
+    correlation: float
+    status: str
+    rms_k: float
+    noise_k: float
+    peak_k: float
+    model_k: np.ndarray
+    jacobian: np.ndarray
+
+    @property
+    def alpha_m2s(self) -> float:
+        """The fit's diffusivity, m2 s-1."""
+        return float(10.0 ** self.fit.x[1])
+
+    @property
+    def alpha_sigma_m2s(self) -> float:
+        """Its 1-sigma, m2 s-1 (infinite when the covariance is singular)."""
+        return float(self.alpha_m2s * np.log(10.0) * self.sigma[1])
+
+
+def _judged(fits: list, spline, obs: np.ndarray, depths: np.ndarray, la: np.ndarray,
+            s2: float, noise_k: float | None, n: int,
+            prior: tuple[float, float, float] | None = None,
+            prior_normal: np.ndarray | None = None) -> _Judged:
+    """The best of ``fits`` (:func:`_fits`, best first) with its 1-sigma (depth m, log10
+    alpha), their correlation and its :attr:`Inversion.status`.
+
+    ``obs`` (S,) K; ``s2`` the residual variance, K²; ``n`` = S (a fit with a prior has one
+    more residual); ``noise_k`` the given noise, K, or None; ``prior`` and ``prior_normal``
+    the fit's prior (:func:`_fits`, :attr:`Inversion.prior_normal`)."""
     best = fits[0]
     d, lalpha = best.x
     r = best.fun[:n]
     rms = float(np.sqrt(np.mean(r**2)))
     noise = rms if noise_k is None else float(noise_k)
-    jm = best.jac[:n]
-    prior_normal = None if prior is None else np.diag([0.0, prior[2] / prior[1] ** 2])
+    jm = np.asarray(best.jac[:n], dtype=float)
     cov = _covariance(jm, s2, prior_normal)
     if cov is None:
         sig = np.array([np.inf, np.inf])
@@ -297,10 +363,6 @@ def invert_anomaly(
     else:
         sig = np.sqrt(np.clip(np.diag(cov), 0, None))
         corr = float(cov[0, 1] / (sig[0] * sig[1])) if sig.all() else 0.0
-    refits = None
-    if gain_sigma > 0:
-        refits = np.array([_fits(spline, grid, obs, depths, la, 1.0 + k * gain_sigma,
-                                 prior)[0].x for k in (1.0, -1.0)])
     # a flat chi-square along the depth (a curve many depths explain): the covariance's
     # local slope understates the depth's spread; the profile's interval does not
     lo, hi = np.array([depths[0], la[0]]), np.array([depths[-1], la[-1]])
@@ -308,7 +370,6 @@ def invert_anomaly(
                                              prior))
     model = spline(best.x[None, :])[0]
     peak = float(np.max(np.abs(model)))
-    alpha = 10.0**lalpha
     tol_d = 0.02 * (depths[-1] - depths[-2])
     tol_a = 0.02 * (la[1] - la[0])
     # another minimum statistically as good (delta chi2 < 4) but at another depth
@@ -330,15 +391,8 @@ def invert_anomaly(
         status = "not_characterised"
     else:
         status = "ok"
-    return Inversion(
-        depth_m=float(d), depth_sigma_m=float(sig[0]), alpha_m2s=float(alpha),
-        alpha_sigma_m2s=float(alpha * np.log(10.0) * sig[1]),
-        log10_alpha_sigma=float(sig[1]), status=status, residual_rms_k=rms, noise_k=noise,
-        peak_contrast_k=peak, correlation=corr, model_contrast_k=model,
-        jacobian=np.asarray(jm, dtype=float), gain_refits=refits,
-        prior_normal=prior_normal, curve_alpha_m2s=curve_alpha,
-        curve_alpha_sigma_m2s=curve_sigma,
-    )
+    return _Judged(fit=best, sigma=sig, correlation=corr, status=status, rms_k=rms,
+                   noise_k=noise, peak_k=peak, model_k=model, jacobian=jm)
 
 
 def _covariance(jac: np.ndarray, s2: float, prior_normal: np.ndarray | None = None
@@ -351,16 +405,6 @@ def _covariance(jac: np.ndarray, s2: float, prior_normal: np.ndarray | None = No
         return np.linalg.inv(jtj) * s2
     except np.linalg.LinAlgError:
         return None
-
-
-def _alpha_and_sigma(fit, s2: float) -> tuple[float, float]:
-    """Diffusivity (m2 s-1) of a least-squares ``fit`` of (depth, log10 alpha) without a
-    prior and its 1-sigma from the fit's covariance (infinite when singular)."""
-    alpha = float(10.0 ** fit.x[1])
-    cov = _covariance(fit.jac, s2)
-    if cov is None:
-        return alpha, float("inf")
-    return alpha, float(alpha * np.log(10.0) * np.sqrt(max(float(cov[1, 1]), 0.0)))
 
 
 def _penalty(log10_alpha: np.ndarray, prior: tuple[float, float, float] | None) -> np.ndarray:

@@ -75,12 +75,10 @@ def test_a_prior_as_wide_as_the_table_is_the_free_fit(forcing):
     assert free.prior_normal is None and wide.prior_normal[1, 1] > 0
 
 
-def test_on_six_scans_the_prior_gives_the_mine_depth_the_free_fit_trades_away():
-    """An AP mine (TNT) at 3 cm in moist sand (a soil six times as diffusive as the fill)
-    under the dry season's sun at 12 N, six scans, measured as the chain measures it
-    (footprint minus ring, an apparent gain of 0.9), 30 mK of noise, 20 draws: the free
-    fit wanders along the depth-diffusivity trade (MAE 0.42 cm), the prior halves that
-    (0.20 cm), and its sigmas with the chain's terms cover the errors."""
+def _dry_season_mine():
+    """An AP mine (TNT) at 3 cm in moist sand under the dry season's sun at 12 N, six scans,
+    measured as the chain measures it: (forcing, times s, feature, measure, the inversion's
+    keywords, ring K)."""
     forcing = clear_sky_forcing(12.0, 0.0, parse_utc("2026-02-15T00:00:00Z"), 86400.0)
     times = forcing.time_s[0] + 3600.0 * SIX_HOURS
     feature = anomaly(forcing, times, 0.03, 1, soil=MOIST)
@@ -88,6 +86,16 @@ def test_on_six_scans_the_prior_gives_the_mine_depth_the_free_fit_trades_away():
     table = chain_site_table(forcing, MOIST, m.radius_m, times, 0.0, m.height_m)
     kw = dict(table=table, over_m=m.over_m, ring_m=m.ring_m, gain=np.full(times.size, GAIN))
     ring = feature.ring_k + ZERO_CELSIUS_K
+    return forcing, times, feature, m, kw, ring
+
+
+def test_on_six_scans_the_prior_gives_the_mine_depth_the_free_fit_trades_away():
+    """An AP mine (TNT) at 3 cm in moist sand (a soil six times as diffusive as the fill)
+    under the dry season's sun at 12 N, six scans, measured as the chain measures it
+    (footprint minus ring, an apparent gain of 0.9), 30 mK of noise, 20 draws: the free
+    fit wanders along the depth-diffusivity trade (MAE 0.42 cm), the prior halves that
+    (0.20 cm), and its sigmas with the chain's terms cover the errors."""
+    forcing, times, feature, m, kw, ring = _dry_season_mine()
     free_err, prior_err, z = [], [], []
     for seed in range(20):
         centre = feature.centre_k + ZERO_CELSIUS_K \
@@ -131,3 +139,27 @@ def test_the_prior_damps_the_curve_terms_along_the_diffusivity():
                                plain)
     damped = curve_term_shifts(j, model, prior_normal=np.diag([0.0, 1.0]))
     assert np.all(np.abs(damped[:, 1]) < np.abs(plain[:, 1]))
+
+
+def test_what_the_likelihood_reads_is_the_curve_alone():
+    """The prior is a mine's diffusivity, so it must not vouch for a mine: the fit status the
+    mine likelihood reads (``fit_status``) is the curve's own. The same six dry-season scans
+    of an AP mine at 3 cm, nine noise draws: with the prior every depth is ``ok``, but where
+    the free fit's depth valley is flat (or has a rival) the curve alone is not
+    characterised, and ``fit_status`` says so, as it does without the prior."""
+    forcing, times, feature, m, kw, ring = _dry_season_mine()
+    flagged = 0
+    for seed in range(9):
+        centre = feature.centre_k + ZERO_CELSIUS_K \
+            + np.random.default_rng(seed).normal(0.0, 0.03, times.size)
+        free = invert_anomaly(times, centre, ring, forcing, MOIST, m.radius_m, **kw)
+        fill = invert_anomaly(times, centre, ring, forcing, MOIST, m.radius_m,
+                              alpha_prior=MINE_FILL_LOG10_ALPHA, **kw)
+        assert fill.status == "ok"
+        assert fill.curve_status == free.status
+        assert fill.curve_depth_sigma_m == pytest.approx(free.depth_sigma_m, rel=1e-9)
+        assert free.curve_status is None and free.curve_depth_sigma_m is None
+        judged = with_chain_errors(fill)
+        assert judged.fit_status == with_chain_errors(free).fit_status
+        flagged += judged.fit_status != "ok"
+    assert flagged >= 2
