@@ -6,14 +6,14 @@ child process per configuration, one after the other:
 - twice with the default thread count (``--no-resume``);
 - once per ``--threads N`` (``CLEARFAST_THREADS=N``);
 - once killed with SIGKILL as soon as the run state records the unit ``--kill-after``
-  (default ``scan_003``: in the mosaic stage), then started again (resume).
+  (default ``mosaics/scan_003``: in the mosaic stage), then started again (resume).
 
 It prints a markdown table: wall and CPU time, suspects, and how many product files (sha256;
 ``products.json`` and ``report.html`` without their timings, as in the resume test) differ from
 the first run's.
 
     python benchmarks/determinism.py [--work /tmp/clearfast-det] [--threads 1 4]
-        [--kill-after scan_003]
+        [--kill-after mosaics/scan_003]
 """
 
 from __future__ import annotations
@@ -92,7 +92,7 @@ def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--work", type=Path, default=Path("/tmp/clearfast-det"))
     ap.add_argument("--threads", type=int, nargs="*", default=[1, 4])
-    ap.add_argument("--kill-after", default="scan_003")
+    ap.add_argument("--kill-after", default="mosaics/scan_003")
     args = ap.parse_args()
     survey = simulated(args.work)
     configs = [("run 1", None), ("run 2", None)] + [(f"{n} thread(s)", n) for n in args.threads]

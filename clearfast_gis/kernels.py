@@ -95,12 +95,12 @@ REGISTRY: dict[str, KernelPair] = {
     "top_hat_by_reconstruction": KernelPair(
         "clearfast_gis.detection._kernels:top_hat_by_reconstruction",
         "clearfast_gis.detection._reference:top_hat_by_reconstruction",
-        "OpenCV disk erosion + hybrid-queue reconstruction (numba)",
+        "disk erosion by chords (numba) + hybrid-queue reconstruction (numba)",
         "scikit-image erosion and `reconstruction`"),
     "bottom_hat_by_reconstruction": KernelPair(
         "clearfast_gis.detection._kernels:bottom_hat_by_reconstruction",
         "clearfast_gis.detection._reference:bottom_hat_by_reconstruction",
-        "OpenCV disk dilation + hybrid-queue reconstruction (numba)",
+        "disk dilation by chords (numba) + hybrid-queue reconstruction (numba)",
         "scikit-image dilation and `reconstruction`"),
     "binary_opening_by_reconstruction": KernelPair(
         "clearfast_gis.detection._kernels:binary_opening_by_reconstruction",

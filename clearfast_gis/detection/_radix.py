@@ -3,11 +3,12 @@ kernel (:func:`clearfast_gis.detection._kernels.order_statistics`).
 
 Each float's bits are mapped to an unsigned key whose integer order is the float order (the
 sign bit set for non-negative values, every bit flipped for negative ones; both zeros get
-+0.0's key, as they compare equal). One pass counts the keys' top :data:`RADIX_BITS` bits; a
-second gathers the keys of the buckets that hold the requested ranks (a bucket of nothing but
-zeros, most of a hat image, is its own answer); a bucket of more than :data:`SORT_BELOW` keys
-is narrowed by bucketing its range again, then sorted. Two passes
-over the data and no copy of it, against ``np.partition``'s copy and introselect.
++0.0's key, as they compare equal). One pass counts the keys' top bits (:data:`RADIX_BITS`,
+fewer for a small array: :func:`_bucket_bits`); a second gathers the keys of the buckets that
+hold the requested ranks (a bucket of nothing but zeros, most of a hat image, is its own
+answer); a bucket of more than :data:`SORT_BELOW` keys is narrowed by bucketing its range
+again, then sorted. Two passes over the data and no copy of it, against ``np.partition``'s
+copy and introselect.
 """
 
 from __future__ import annotations
@@ -16,12 +17,23 @@ import numba
 import numpy as np
 
 RADIX_BITS = 16
-"""Key bits resolved per pass."""
+"""Key bits resolved per pass at most (fewer for fewer keys: :func:`_bucket_bits`)."""
 
 SORT_BELOW = 4096
 """A bucket of at most this many keys is sorted rather than narrowed further."""
 
-_BUCKETS = 1 << RADIX_BITS
+
+@numba.njit(cache=True, nogil=True)
+def _bucket_bits(n):  # pragma: no cover - compiled
+    """Key bits resolved by one pass over ``n`` keys: :data:`RADIX_BITS` for large arrays,
+    about ``log2(n) - 4`` (at least 8) for small ones, so that the buckets' counts (zeroed,
+    summed and scanned once per pass) cost less than the keys themselves (a median of a
+    10,000-value window spent most of its time on 65,536 buckets). The buckets chosen do
+    not change the key found at a rank."""
+    bits = 0
+    while n >> bits:
+        bits += 1
+    return min(RADIX_BITS, max(8, bits - 4))
 
 
 @numba.njit(cache=True, nogil=True, inline="always")
@@ -46,12 +58,13 @@ def _narrow(keys, rank):  # pragma: no cover - compiled
             hi = max(hi, k)
         if lo == hi:  # e.g. the zeros of a hat image
             return lo
-        # buckets of (k - lo) >> shift: the range spread over at most 2**16 buckets, of which
+        # buckets of (k - lo) >> shift: the range spread over at most 2**bits buckets, of which
         # lo and hi fall in different ones, so every pass narrows
+        bits = _bucket_bits(keys.size)
         shift = 0
-        while (hi - lo) >> np.uint64(shift + RADIX_BITS):
+        while (hi - lo) >> np.uint64(shift + bits):
             shift += 1
-        hist = np.zeros(_BUCKETS, dtype=np.int64)
+        hist = np.zeros(1 << bits, dtype=np.int64)
         for k in keys:
             hist[((k - lo) >> np.uint64(shift))] += 1
         below = 0
@@ -91,12 +104,13 @@ def select_keys(bits, nbits, ranks):  # pragma: no cover - compiled
     """
     sign = np.uint64(1) << np.uint64(nbits - 1)
     ones = (sign - np.uint64(1)) | sign
-    shift = np.uint64(nbits - RADIX_BITS)
+    n = bits.size
+    n_buckets = 1 << _bucket_bits(n)
+    shift = np.uint64(nbits) - np.uint64(_bucket_bits(n))
     # four interleaved counts (no chain of increments of one counter when a bucket holds
     # most values), and the exact zeros: a hat image is mostly zeros
-    counts = np.zeros((4, _BUCKETS), dtype=np.int64)
+    counts = np.zeros((4, n_buckets), dtype=np.int64)
     zeros = 0
-    n = bits.size
     for i in range(n):
         k = _key(bits[i], sign, ones)
         zeros += k == sign
@@ -107,7 +121,7 @@ def select_keys(bits, nbits, ranks):  # pragma: no cover - compiled
     base = np.empty(nr, dtype=np.int64)
     start = 0
     r = 0
-    for t in range(_BUCKETS):
+    for t in range(n_buckets):
         while r < nr and ranks[r] < start + hist[t]:
             bucket[r] = t
             base[r] = start
@@ -115,7 +129,7 @@ def select_keys(bits, nbits, ranks):  # pragma: no cover - compiled
         start += hist[t]
     zero_t = np.int64(sign >> shift)
     only_zeros = hist[zero_t] == zeros
-    offset = np.full(_BUCKETS, -1, dtype=np.int64)  # where each gathered bucket's keys go
+    offset = np.full(n_buckets, -1, dtype=np.int64)  # where each gathered bucket's keys go
     total = 0
     for r in range(nr):
         t = bucket[r]

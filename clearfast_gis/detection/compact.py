@@ -12,27 +12,27 @@ their own.
 
 from __future__ import annotations
 
-import cv2
 import numpy as np
 from scipy import ndimage
 
-from clearfast_gis.detection.morphology import disk_footprint
+from clearfast_gis.detection.morphology import dilate_disk, disk_footprint, erode_disk
 from clearfast_gis.detection.multiscale import robust_sigma
 from clearfast_gis.detection.selection import median
 from clearfast_gis.detection.stack import as_scan_stack, map_scans
 
 
-def _compact_term(f: np.ndarray, kernel: np.ndarray) -> tuple[np.ndarray, np.ndarray] | None:
+def _compact_term(f: np.ndarray, d1_px: float) -> tuple[np.ndarray, np.ndarray] | None:
     """One image's term of :func:`compact_contrast`: ``(where(ok, resp / sigma, 0), ok)``,
-    or None when the image does not count (too few cells, no spread)."""
+    or None when the image does not count (too few cells, no spread).
+
+    The opening and closing by the D1 disk ignore the cells outside the image (for a disk
+    the same values as OpenCV's ``morphologyEx`` with a replicated border: tested)."""
     ok = np.isfinite(f)
     if ok.sum() < 9:
         return None
     filled = np.where(ok, f, median(f[ok])).astype(np.float32)
-    white = filled - cv2.morphologyEx(filled, cv2.MORPH_OPEN, kernel,
-                                      borderType=cv2.BORDER_REPLICATE)
-    black = cv2.morphologyEx(filled, cv2.MORPH_CLOSE, kernel,
-                             borderType=cv2.BORDER_REPLICATE) - filled
+    white = filled - dilate_disk(erode_disk(filled, d1_px), d1_px)
+    black = erode_disk(dilate_disk(filled, d1_px), d1_px) - filled
     resp = np.maximum(white, black)
     sigma = robust_sigma(np.where(ok, white - black, np.nan))
     if not sigma > 0:
@@ -75,11 +75,10 @@ def compact_contrast(images, d1_px: float) -> np.ndarray:
         Mean over the images of ``max(f - f o D1, f . D1 - f) / sigma``, with ``sigma`` the
         robust standard deviation of the image's top-hat; NaN where no image has data.
     """
-    kernel = disk_footprint(d1_px).astype(np.uint8)
     acc = None
     for f in images:
         acc = _CompactSum(f.shape) if acc is None else acc
-        acc.add(_compact_term(f, kernel))
+        acc.add(_compact_term(f, d1_px))
     if acc is None:
         raise ValueError("no images")
     return acc.result()
@@ -124,12 +123,11 @@ def split_oversized(labels: np.ndarray, stack, d1_px: float, d2_px: float,
         searched.append((lab, (slice(r0, r1), slice(c0, c1))))
     if not searched:
         return out
-    kernel = disk_footprint(d1_px).astype(np.uint8)
     sums = [_CompactSum(out[crop].shape) for _, crop in searched]
 
     # each scan's terms on its reading thread; added in scan and band order
     def terms(_scan: int, bands: np.ndarray) -> list[list]:
-        return [[_compact_term(image[crop], kernel) for _, crop in searched]
+        return [[_compact_term(image[crop], d1_px) for _, crop in searched]
                 for image in bands]
 
     for per_band in map_scans(terms, as_scan_stack(stack)):

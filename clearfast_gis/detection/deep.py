@@ -36,6 +36,7 @@ import cv2
 import numpy as np
 from scipy import ndimage
 
+from clearfast_gis.detection._matchsum import add_scan
 from clearfast_gis.detection.detector import DetectionResult, unpack_bits
 from clearfast_gis.detection.features import RING_RADII
 from clearfast_gis.detection.multiscale import robust_sigma
@@ -180,14 +181,8 @@ def stack_match(stack, templates_k: np.ndarray, radius_px: float) -> StackMatch:
             continue
         z, sigma = scan
         sigmas[k] = sigma
-        ok = np.isfinite(z)
-        z = np.where(ok, z, 0.0)
-        energy += z.astype(np.float64) ** 2
-        scans += ok
-        for t in range(n_t):
-            u = templates[t, k] / sigma
-            num[t] += u * z
-            den[t] += np.where(ok, u * u, 0.0)
+        add_scan(np.ascontiguousarray(z, dtype=np.float32), templates[:, k] / sigma, num, den,
+                 energy, scans)
     with np.errstate(invalid="ignore", divide="ignore"):
         per_template = np.where(den > 0, num / np.sqrt(den), -np.inf)
     best = np.argmax(per_template, axis=0)

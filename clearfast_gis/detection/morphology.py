@@ -1,19 +1,25 @@
-"""Disk erosion/dilation (OpenCV) and top-hat / bottom-hat by reconstruction (paper §4.1).
+"""Disk erosion/dilation and top-hat / bottom-hat by reconstruction (paper §4.1).
 
 A disk of diameter D pixels is ``skimage.morphology.disk(r)`` with ``r = round((D - 1) / 2)``
 (it spans ``2 r + 1`` pixels); that exact footprint is the OpenCV kernel, so
 ``cv2.erode`` gives the same values as ``skimage.morphology.erosion`` (pixels outside the image
-are ignored by both). NaN (no-data) pixels are ignored by the erosion/dilation (they are set to
-+inf / -inf first) and are walls for the reconstruction; they are NaN in the results.
+are ignored by both). Float images with ``r >= CHORD_MIN_RADIUS_PX`` are eroded by the disk's
+chords instead (:mod:`clearfast_gis.detection._chords`: the same values as ``cv2.erode``,
+four to five times faster for the detector's D1 of 25 pixels). NaN (no-data) pixels are
+ignored by the erosion/dilation (they are set to +inf / -inf first) and are walls for the
+reconstruction; they are NaN in the results.
 """
 
 from __future__ import annotations
+
+import functools
 
 import cv2
 import numpy as np
 from skimage.morphology import disk
 
 from clearfast_gis import kernels
+from clearfast_gis.detection._chords import chord_half_widths, erode_chords, segment_schedule
 
 __all__ = ["binary_opening_by_reconstruction", "bottom_hat_by_reconstruction",
            "disk_footprint", "disk_radius_px", "erode_disk", "dilate_disk",
@@ -30,6 +36,36 @@ def disk_radius_px(diameter_px: float) -> int:
 def disk_footprint(diameter_px: float) -> np.ndarray:
     """The disk structuring element of diameter ``diameter_px`` as uint8 (2r+1, 2r+1)."""
     return disk(disk_radius_px(diameter_px)).astype(np.uint8)
+
+
+CHORD_MIN_RADIUS_PX = 3
+"""Float images are eroded by chords for disks of this radius and larger (OpenCV's loop over
+the disk's cells is as fast below it)."""
+
+
+@functools.lru_cache(maxsize=32)
+def _chords(diameter_px: float) -> tuple[np.ndarray, np.ndarray] | None:
+    """(half-widths, schedule) of the disk of ``diameter_px`` for :func:`erode_chords`, or
+    None below :data:`CHORD_MIN_RADIUS_PX`."""
+    if disk_radius_px(diameter_px) < CHORD_MIN_RADIUS_PX:
+        return None
+    half_widths = chord_half_widths(disk_footprint(diameter_px))
+    return None if half_widths is None else (half_widths, segment_schedule(half_widths))
+
+
+def _erode_float(src: np.ndarray, diameter_px: float, dilate: bool) -> np.ndarray:
+    """Erosion (or dilation) of a float image without NaN by the disk, pixels outside the
+    image ignored: by chords, or ``cv2.erode`` / ``cv2.dilate`` for small disks."""
+    chords = _chords(float(diameter_px))
+    if chords is None:
+        op = cv2.dilate if dilate else cv2.erode
+        return op(src, disk_footprint(diameter_px), borderType=cv2.BORDER_CONSTANT,
+                  borderValue=_border_value(src.dtype, high=not dilate))
+    # max(f) = -min(-f), exactly
+    f = np.negative(src) if dilate else np.ascontiguousarray(src)
+    out = np.empty(f.shape, dtype=f.dtype)
+    erode_chords(f, *chords, out)
+    return np.negative(out, out=out) if dilate else out
 
 
 def _as_cv(image: np.ndarray) -> np.ndarray:
@@ -59,8 +95,11 @@ def erode_disk(image: np.ndarray, diameter_px: float) -> np.ndarray:
             src = np.where(nan, np.inf, src).astype(src.dtype)
         else:
             nan = None
-    out = cv2.erode(src, disk_footprint(diameter_px), borderType=cv2.BORDER_CONSTANT,
-                    borderValue=_border_value(src.dtype, high=True))
+    if src.dtype.kind == "f":
+        out = _erode_float(src, diameter_px, dilate=False)
+    else:
+        out = cv2.erode(src, disk_footprint(diameter_px), borderType=cv2.BORDER_CONSTANT,
+                        borderValue=_border_value(src.dtype, high=True))
     if nan is not None:
         out[nan] = np.nan
     return out.astype(bool) if np.asarray(image).dtype == np.bool_ else out
@@ -76,8 +115,11 @@ def dilate_disk(image: np.ndarray, diameter_px: float) -> np.ndarray:
             src = np.where(nan, -np.inf, src).astype(src.dtype)
         else:
             nan = None
-    out = cv2.dilate(src, disk_footprint(diameter_px), borderType=cv2.BORDER_CONSTANT,
-                     borderValue=_border_value(src.dtype, high=False))
+    if src.dtype.kind == "f":
+        out = _erode_float(src, diameter_px, dilate=True)
+    else:
+        out = cv2.dilate(src, disk_footprint(diameter_px), borderType=cv2.BORDER_CONSTANT,
+                         borderValue=_border_value(src.dtype, high=False))
     if nan is not None:
         out[nan] = np.nan
     return out.astype(bool) if np.asarray(image).dtype == np.bool_ else out

@@ -6,7 +6,7 @@ radiometry (two-blackbody calibration, atmosphere, apparent temperature).
 
 from __future__ import annotations
 
-from collections.abc import Iterator, Sequence
+from collections.abc import Callable, Iterator, Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -89,7 +89,8 @@ def path_length_map(camera, pose: CameraPose, lattice: int = 17) -> np.ndarray:
 
 
 def scan_frames(ctx: SurveyContext, scan: int, air_at, atmosphere: bool = True,
-                chunk: int = 32) -> Iterator[FrameInput]:
+                chunk: int = 32, empty: Callable[..., np.ndarray] = np.empty
+                ) -> Iterator[FrameInput]:
     """Apparent-temperature frames of one scan, in scan-pattern order.
 
     Parameters
@@ -102,6 +103,10 @@ def scan_frames(ctx: SurveyContext, scan: int, air_at, atmosphere: bool = True,
         Apply the atmospheric correction.
     chunk : int
         Positions calibrated at a time (bounds memory for large frames).
+    empty : callable
+        ``empty(shape, dtype)``: the memory of each block of calibrated frames, float32
+        (P, B, H, W), every element of which is written here (``np.empty``, or a
+        :class:`~clearfast_gis.mosaic.buffers.BufferLease`'s blocks of an earlier scan).
 
     Yields
     ------
@@ -134,8 +139,8 @@ def scan_frames(ctx: SurveyContext, scan: int, air_at, atmosphere: bool = True,
         block_pos = keep[idx]
         block_poses = poses[idx]
         paths = np.stack([path_length_map(ctx.camera, p) for p in block_poses])
-        stack = np.empty((block_pos.size, n_bands, ctx.camera.height, ctx.camera.width),
-                         dtype=np.float32)  # (P, B, H, W)
+        stack = empty((block_pos.size, n_bands, ctx.camera.height, ctx.camera.width),
+                      np.float32)  # (P, B, H, W)
         for b in range(n_bands):
             order = np.searchsorted(pos_all[b], block_pos)
             if np.any(pos_all[b][order] != block_pos):

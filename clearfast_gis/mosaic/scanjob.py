@@ -24,6 +24,7 @@ from clearfast_gis.attitude import ReferenceMosaic, reposed, reposed_in_time, sc
 from clearfast_gis.attitude.placement import nearest_attitude, placement_attitude
 from clearfast_gis.export.cog import read_mosaic, write_cog
 from clearfast_gis.export.layout import mosaic_rel, source_rel
+from clearfast_gis.mosaic.buffers import BufferLease, BufferPool
 from clearfast_gis.mosaic.build import FrameCorrection, build_scan_mosaic
 from clearfast_gis.mosaic.frames import frame_pose, scan_frames, scan_times
 from clearfast_gis.progress import NULL_PROGRESS
@@ -66,6 +67,9 @@ class ScanJob:
         self._writer = ThreadPoolExecutor(1, thread_name_prefix="clearfast-writer")
         self._writing: tuple | None = None
         self._last: tuple | None = None  # (scan, values, source) of the last scan built
+        # the calibrated frames' memory, reused from scan to scan (mosaic.buffers)
+        self._buffers = BufferPool()
+        self._leases: dict[int, BufferLease] = {}
 
     def plan(self, scans: list[int]) -> None:
         """The scans about to be built, in order: while one is registered and projected, the
@@ -84,6 +88,8 @@ class ScanJob:
         finally:
             self._writer.shutdown(wait=True)
             self._last = None
+            self._leases.clear()
+            self._buffers.clear()
 
     def _calibrated(self, scan: int) -> list:
         """Apparent-temperature frames of ``scan``, computing the planned next scan's
@@ -98,9 +104,13 @@ class ScanJob:
         return frames
 
     def _frames(self, scan: int) -> list:
-        """All apparent-temperature frames of ``scan`` (:func:`scan_frames`)."""
-        return list(scan_frames(self.ctx, scan, self.air_at,
-                                atmosphere=self.options.atmosphere))
+        """All apparent-temperature frames of ``scan`` (:func:`scan_frames`), in blocks
+        leased from the pool until the scan's mosaic is built (:meth:`build`)."""
+        lease = self._buffers.lease()
+        frames = list(scan_frames(self.ctx, scan, self.air_at,
+                                  atmosphere=self.options.atmosphere, empty=lease.empty))
+        self._leases[scan] = lease
+        return frames
 
     def frame_times(self, scan: int, frames) -> np.ndarray:
         """Time (UTC epoch s) of each frame of ``frames`` (band 0 of its position)."""
@@ -163,6 +173,11 @@ class ScanJob:
                               max_shift_m=options.max_shift_m,
                               max_angle_deg=options.max_angle_deg,
                               seam_balance=options.seam_balance, progress=progress)
+        # the mosaic holds copies: the frames' blocks go to the next scans' calibration
+        del frames, placed
+        lease = self._leases.pop(scan, None)
+        if lease is not None:
+            lease.release()
         t_start, t_mean = scan_times(survey, scan)
         rec = {"scan": scan, "time_s": t_mean, "start_s": t_start,
                "attitude": None if fit is None else fit.as_dict(),

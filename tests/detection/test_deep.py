@@ -136,3 +136,32 @@ def test_a_curve_seen_over_part_of_the_day_is_no_core():
     match = stack_match(seen, TEMPLATES, RADIUS_PX)
     assert match.scans[100, 100] == N_SCANS // 2 and match.score[100, 100] > 6.0
     assert deep_cores(empty, match, RADIUS_PX, 25.0, 22.0)[1] == []
+
+
+def test_matched_filter_sums_equal_the_numpy_form():
+    """``_matchsum.add_scan`` against the sums as numpy wrote them, to the last bit."""
+    from clearfast_gis.detection._matchsum import add_scan
+
+    rng = np.random.default_rng(8)
+    shape, n_t, n_scans = (23, 31), 5, 7
+    templates = rng.normal(size=(n_t, n_scans))
+    sums = [np.zeros((n_t, *shape)), np.zeros((n_t, *shape)), np.zeros(shape),
+            np.zeros(shape, dtype=np.int32)]
+    ref = [a.copy() for a in sums]
+    for k in range(n_scans):
+        z = (rng.normal(size=shape) * 3.0).astype(np.float32)
+        z[rng.random(shape) < 0.2] = np.nan
+        z[0, :3] = np.float32(0.0)
+        sigma = float(rng.uniform(0.5, 2.0))
+        add_scan(z, templates[:, k] / sigma, *sums)
+        num, den, energy, scans = ref
+        ok = np.isfinite(z)
+        zz = np.where(ok, z, 0.0)
+        energy += zz.astype(np.float64) ** 2
+        scans += ok
+        for t in range(n_t):
+            u = templates[t, k] / sigma
+            num[t] += u * zz
+            den[t] += np.where(ok, u * u, 0.0)
+    for a, b in zip(sums, ref, strict=True):
+        assert a.dtype == b.dtype and a.tobytes() == b.tobytes()

@@ -24,7 +24,7 @@ def _values(n: int, dtype, seed: int) -> np.ndarray:
 
 
 @pytest.mark.parametrize("dtype", [np.float32, np.float64])
-@pytest.mark.parametrize("n", [1, 2, 7, SORT_BELOW + 1, 200_001])
+@pytest.mark.parametrize("n", [1, 2, 7, 300, SORT_BELOW + 1, 20_000, 70_000, 200_001])
 def test_same_values_as_partition(n, dtype):
     v = _values(n, dtype, seed=n)
     before = v.copy()
