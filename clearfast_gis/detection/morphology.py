@@ -87,39 +87,32 @@ def erode_disk(image: np.ndarray, diameter_px: float) -> np.ndarray:
     diameter_px : float
         Disk diameter in pixels.
     """
-    src = _as_cv(image)
-    nan = None
-    if src.dtype.kind == "f":
-        nan = np.isnan(src)
-        if nan.any():
-            src = np.where(nan, np.inf, src).astype(src.dtype)
-        else:
-            nan = None
-    if src.dtype.kind == "f":
-        out = _erode_float(src, diameter_px, dilate=False)
-    else:
-        out = cv2.erode(src, disk_footprint(diameter_px), borderType=cv2.BORDER_CONSTANT,
-                        borderValue=_border_value(src.dtype, high=True))
-    if nan is not None:
-        out[nan] = np.nan
-    return out.astype(bool) if np.asarray(image).dtype == np.bool_ else out
+    return _disk_filter(image, diameter_px, dilate=False)
 
 
 def dilate_disk(image: np.ndarray, diameter_px: float) -> np.ndarray:
     """Grey-scale (or binary) dilation by a disk; NaN pixels are ignored and stay NaN."""
+    return _disk_filter(image, diameter_px, dilate=True)
+
+
+def _disk_filter(image: np.ndarray, diameter_px: float, dilate: bool) -> np.ndarray:
+    """Erosion (``dilate`` False) or dilation by a disk: float images by the disk's chords,
+    integer and binary ones by OpenCV; NaN pixels ignored (the neutral value in their place)
+    and NaN again in the result."""
     src = _as_cv(image)
     nan = None
     if src.dtype.kind == "f":
         nan = np.isnan(src)
         if nan.any():
-            src = np.where(nan, -np.inf, src).astype(src.dtype)
+            src = np.where(nan, -np.inf if dilate else np.inf, src).astype(src.dtype)
         else:
             nan = None
     if src.dtype.kind == "f":
-        out = _erode_float(src, diameter_px, dilate=True)
+        out = _erode_float(src, diameter_px, dilate=dilate)
     else:
-        out = cv2.dilate(src, disk_footprint(diameter_px), borderType=cv2.BORDER_CONSTANT,
-                         borderValue=_border_value(src.dtype, high=False))
+        op = cv2.dilate if dilate else cv2.erode
+        out = op(src, disk_footprint(diameter_px), borderType=cv2.BORDER_CONSTANT,
+                 borderValue=_border_value(src.dtype, high=not dilate))
     if nan is not None:
         out[nan] = np.nan
     return out.astype(bool) if np.asarray(image).dtype == np.bool_ else out
