@@ -28,7 +28,7 @@ import numpy as np
 from clearfast_gis.detection.likelihood import FEATURES, features, p_mine_from_features
 from clearfast_gis.detection.screening import screen
 from clearfast_gis.evaluation.operating import reliability_table
-from clearfast_gis.evaluation.truth import MINE_KINDS, read_truth_objects
+from clearfast_gis.evaluation.truth import MINE_KINDS, mine_match_radius_m, read_truth_objects
 
 MODEL_VERSION = "logistic-5"
 
@@ -51,7 +51,7 @@ def is_mine(records: list[dict], survey: Path) -> np.ndarray:
     mines = [m for m in read_truth_objects(survey) if m["kind"] in MINE_KINDS]
     out = np.zeros(len(records), dtype=bool)
     for i, r in enumerate(records):
-        out[i] = any(np.hypot(r["x"] - m["x"], r["y"] - m["y"]) <= 0.5 * m["diameter_m"] + 0.05
+        out[i] = any(np.hypot(r["x"] - m["x"], r["y"] - m["y"]) <= mine_match_radius_m(m)
                      for m in mines)
     return out
 

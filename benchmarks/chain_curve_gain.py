@@ -20,7 +20,7 @@ import argparse
 
 import numpy as np
 
-from clearfast_gis.evaluation.truth import MINE_KINDS, read_truth_objects
+from clearfast_gis.evaluation.truth import MINE_KINDS, nearest_match, read_truth_objects
 from clearfast_gis.pipeline import anomalies, process_survey
 from clearfast_gis.thermal.canopy import under_canopy
 from clearfast_gis.thermal.measure import anomaly_measure
@@ -66,9 +66,8 @@ def mine_slopes(survey: str, products: str) -> list[tuple[str, float, float, flo
     for m in read_truth_objects(survey):
         if m["kind"] not in MINE_KINDS or m["depth_m"] > MAX_DEPTH_M or not feats:
             continue
-        d = np.hypot(fx - m["x"], fy - m["y"])
-        j = int(np.argmin(d))
-        if d[j] > 0.5 * m["diameter_m"] + 0.05:
+        j = nearest_match(fx, fy, m)
+        if j is None:
             continue
         me = anomaly_measure(feats[j])
         key = (me.radius_m, me.height_m)

@@ -21,7 +21,7 @@ import math
 
 import numpy as np
 
-from clearfast_gis.evaluation.truth import MINE_KINDS, read_truth_objects
+from clearfast_gis.evaluation.truth import MINE_KINDS, nearest_match, read_truth_objects
 from clearfast_gis.pipeline import anomalies, process_survey
 from clearfast_gis.thermal import sitesoil
 from clearfast_gis.thermal.error_budget import chain_sigmas, model_depth_variance
@@ -68,9 +68,8 @@ def mine_rows(survey: str, products: str) -> list[dict]:
     for m in read_truth_objects(survey):
         if m["kind"] not in MINE_KINDS or not 0 < m["depth_m"] <= MAX_DEPTH_M:
             continue
-        d = np.hypot(fx - m["x"], fy - m["y"])
-        j = int(np.argmin(d))
-        if d[j] > 0.5 * m["diameter_m"] + 0.05 or features[j].id not in inversions:
+        j = nearest_match(fx, fy, m)
+        if j is None or features[j].id not in inversions:
             continue
         fit, out, extra = inversions[features[j].id]
         if out.status != "ok":

@@ -13,9 +13,7 @@ import math
 from dataclasses import dataclass
 from pathlib import Path
 
-import numpy as np
-
-from clearfast_gis.evaluation.truth import MINE_KINDS, read_truth_objects
+from clearfast_gis.evaluation.truth import MINE_KINDS, nearest_match, read_truth_objects
 
 #: Statuses that withhold a depth or flag it.
 FLAGS = ("weak_contrast", "not_characterised")
@@ -69,11 +67,8 @@ def mine_statuses(survey: str | Path, products: str | Path) -> list[MineStatus]:
     sx, sy = sus["x"].to_numpy(float), sus["y"].to_numpy(float)
     out = []
     for m in read_truth_objects(survey):
-        if m["kind"] not in MINE_KINDS or not len(sx):
-            continue
-        d = np.hypot(sx - m["x"], sy - m["y"])
-        j = int(np.argmin(d))
-        if d[j] > 0.5 * m["diameter_m"] + 0.05:
+        j = nearest_match(sx, sy, m) if m["kind"] in MINE_KINDS else None
+        if j is None:
             continue
         rec = sus.iloc[j]
         out.append(MineStatus(str(m["id"]), float(m["depth_m"]), str(rec["status"]),

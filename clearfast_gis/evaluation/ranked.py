@@ -15,7 +15,7 @@ import numpy as np
 import pandas as pd
 
 from clearfast_gis.evaluation.operating import operating_curve, pd_at_false_alarm_rate
-from clearfast_gis.evaluation.truth import MINE_KINDS, read_truth_objects
+from clearfast_gis.evaluation.truth import MINE_KINDS, mine_match_radius_m, read_truth_objects
 
 SCORED_MAX_DEPTH_M = 0.05
 """Mines at most this deep are scored for detection (the issue's goal)."""
@@ -72,7 +72,7 @@ class RankedScore:
 
 
 def _near(sx: np.ndarray, sy: np.ndarray, m: dict) -> np.ndarray:
-    return np.hypot(sx - m["x"], sy - m["y"]) <= 0.5 * m["diameter_m"] + 0.05
+    return np.hypot(sx - m["x"], sy - m["y"]) <= mine_match_radius_m(m)
 
 
 def _reranked(gpkg: Path, model: Mapping) -> tuple[pd.DataFrame, pd.DataFrame]:

@@ -16,6 +16,25 @@ import numpy as np
 MINE_KINDS = ("at_mine", "ap_mine")
 MINE_CUES = ("at_mine", "ap_mine")
 
+MATCH_MARGIN_M = 0.05
+"""A suspect matches a mine within the mine's radius plus this margin (m)."""
+
+
+def mine_match_radius_m(mine: dict) -> float:
+    """The distance (m) within which a suspect matches ``mine`` (a truth record): its radius
+    plus :data:`MATCH_MARGIN_M`."""
+    return 0.5 * mine["diameter_m"] + MATCH_MARGIN_M
+
+
+def nearest_match(x: np.ndarray, y: np.ndarray, mine: dict) -> int | None:
+    """Index of the point (``x``, ``y``: (N,) m, the truth's CRS) nearest ``mine`` if it lies
+    within :func:`mine_match_radius_m`, else None (also for no points)."""
+    if not len(x):
+        return None
+    d = np.hypot(np.asarray(x, float) - mine["x"], np.asarray(y, float) - mine["y"])
+    j = int(np.argmin(d))
+    return j if d[j] <= mine_match_radius_m(mine) else None
+
 
 @dataclass
 class TruthScore:
@@ -119,7 +138,7 @@ def score_against_truth(survey: str | Path, products: str | Path, max_depth_m: f
     matched_suspects = set()
     for m in mines:
         inside = footprint is None or footprint.contains(Point(m["x"], m["y"]))
-        radius = match_radius_m if match_radius_m is not None else 0.5 * m["diameter_m"] + 0.05
+        radius = match_radius_m if match_radius_m is not None else mine_match_radius_m(m)
         d = np.hypot(sx - m["x"], sy - m["y"]) if len(sx) else np.array([])
         hits = np.flatnonzero(d <= radius)
         matched_suspects.update(hits.tolist())
