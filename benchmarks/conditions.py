@@ -20,6 +20,11 @@ table, Svalbard, July 2024, from ``../shared/data/real-field-files/toa5``, read 
 standard names; not copied into the repository).
 
     python benchmarks/conditions.py [--preset demo] [--seeds 0 1] [--only clear overcast]
+        [--fills tnt comp_b plastic pine]
+
+``--fills`` gives each mine a body drawn from those materials (the scenario's ``mine_fills``)
+instead of every mine TNT-filled: the handbook spread of fills that the inversion's prior of
+a mine's diffusivity states, which the single-fill twin cannot test.
 
 Conditions run in the order listed (the most telling first).
 
@@ -40,6 +45,7 @@ from clearfast_gis.evaluation import mine_statuses, score_against_truth
 from clearfast_gis.evaluation.ranked import score_ranked
 from clearfast_gis.pipeline import ProcessOptions, process_survey
 from clearfast_gis.simulate import parse_scenario, preset, simulate_survey
+from clearfast_gis.thermal.materials import MINE_FILLS
 
 ROOT = Path(__file__).resolve().parents[1]
 REAL_TOA5 = (ROOT.parent / "shared" / "data" / "real-field-files" / "toa5"
@@ -124,6 +130,9 @@ def main() -> None:
     ap.add_argument("--seeds", type=int, nargs="+", default=[0, 1])
     ap.add_argument("--only", nargs="*", help="conditions whose name starts with these")
     ap.add_argument("--work", default="/tmp/clearfast-conditions")
+    ap.add_argument("--fills", nargs="+", choices=MINE_FILLS, metavar="FILL",
+                    help="draw each mine's body from these (scenario mine_fills: "
+                         f"{', '.join(MINE_FILLS)}); surveys go to folders ending -fills")
     ap.add_argument("--score-only", action="store_true",
                     help="score the products already in --work (no simulation, no processing)")
     args = ap.parse_args()
@@ -140,8 +149,9 @@ def main() -> None:
     totals: dict[str, list[dict]] = {}
     for name in names:
         doc = {"format": "clearfast-scenario", "format_version": 1, "preset": args.preset,
-               **CONDITIONS[name]}
+               **CONDITIONS[name], **({"mine_fills": args.fills} if args.fills else {})}
         slug = "".join(c if c.isalnum() else "-" for c in name.lower()).strip("-")
+        slug += "-fills" if args.fills else ""
         for seed in args.seeds:
             base = work / f"{args.preset}-{slug}-s{seed}"
             base.mkdir(parents=True, exist_ok=True)

@@ -102,6 +102,8 @@ class SimConfig:
     figures of BENCHMARKS.md up to issue 22); a type of
     :data:`clearfast_gis.thermal.soils.SOIL_TYPES` with ``soil_moisture`` (degree of
     saturation) gives an evaporating soil; ``vegetation_cover`` 0..1 a uniform grass canopy.
+    ``mine_fills`` (:data:`clearfast_gis.thermal.materials.MINE_FILLS` names): each drawn
+    mine's body is one of them, drawn from the seed; empty, every mine is TNT-filled.
     """
 
     name: str = "demo"
@@ -143,6 +145,7 @@ class SimConfig:
     soil_type: str | None = None
     soil_moisture: float = 0.5
     vegetation_cover: float = 0.0
+    mine_fills: tuple[str, ...] = ()
 
     @property
     def width(self) -> int:

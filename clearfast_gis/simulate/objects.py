@@ -7,7 +7,7 @@ CRS.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -15,6 +15,9 @@ from clearfast_gis.simulate.config import SimConfig
 
 KINDS = ("at_mine", "ap_mine", "stone", "metal", "vegetation", "disturbed_soil", "marker")
 """Object kinds, as written in ``truth/objects.csv``."""
+
+MINE_KINDS = ("at_mine", "ap_mine")
+"""The kinds that are mines (whose body can be any of the mine fills)."""
 
 #: Nominal sizes (diameter, height), metres. AT M6A2: 33.7 cm; AP M2A4: 10.4 cm.
 AT_DIAMETER_M = 0.337
@@ -50,6 +53,11 @@ class SceneObject:
         Minor/major axis ratio of elliptic patches (1 for discs).
     angle_deg : float
         Orientation of the patch's major axis, degrees counter-clockwise from east.
+    material : str
+        The body's material (:data:`clearfast_gis.thermal.materials.MATERIALS` name) where
+        it is not the kind's (:data:`clearfast_gis.simulate.surface.OBJECT_MATERIAL`): a
+        mine's fill (:data:`clearfast_gis.thermal.materials.MINE_FILLS`); ``""`` for the
+        kind's.
     """
 
     id: str
@@ -62,6 +70,7 @@ class SceneObject:
     variant: str = ""
     aspect: float = 1.0
     angle_deg: float = 0.0
+    material: str = ""
 
     @property
     def radius_m(self) -> float:
@@ -91,7 +100,9 @@ def draw_objects(config: SimConfig, rng: np.random.Generator) -> list[SceneObjec
 
     Markers go near the area's corners (surveyed reference points), patches (vegetation,
     disturbed soil) first, then mines, stones and debris on free ground. Mine depths cycle
-    through :data:`MINE_DEPTHS_M` so every preset holds surface-laid and buried mines.
+    through :data:`MINE_DEPTHS_M` so every preset holds surface-laid and buried mines. With
+    ``config.mine_fills`` each mine's body is then drawn from those materials (after every
+    placement, so the layout is the same as without).
 
     Parameters
     ----------
@@ -153,4 +164,8 @@ def draw_objects(config: SimConfig, rng: np.random.Generator) -> list[SceneObjec
     place("stone", counts.stone, lambda: np.round(rng.uniform(0.06, 0.24), 2), lambda i: 0.0)
     place("metal", counts.metal, lambda: np.round(rng.uniform(0.04, 0.12), 2),
           lambda i: 0.0 if i % 2 == 0 else 0.02)
+    if config.mine_fills:
+        fills = config.mine_fills
+        placed = [replace(o, material=fills[int(rng.integers(len(fills)))])
+                  if o.kind in MINE_KINDS else o for o in placed]
     return placed

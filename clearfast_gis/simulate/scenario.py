@@ -16,7 +16,7 @@ import jsonschema
 
 from clearfast_gis.errors import InvalidInput
 from clearfast_gis.simulate.config import RainEvent, SimConfig, WeatherSpec, preset
-from clearfast_gis.simulate.objects import KINDS, SceneObject, default_height_m
+from clearfast_gis.simulate.objects import KINDS, MINE_KINDS, SceneObject, default_height_m
 from clearfast_gis.timeutil import format_utc, parse_utc
 
 #: Default diameters of listed objects whose scenario entry gives none, metres.
@@ -120,6 +120,8 @@ def parse_scenario(doc: dict, path: str | Path | None = None,
         upd["soil_moisture"] = float(doc["soil"].get("moisture", cfg.soil_moisture))
     if "vegetation_cover" in doc:
         upd["vegetation_cover"] = float(doc["vegetation_cover"])
+    if "mine_fills" in doc:
+        upd["mine_fills"] = tuple(doc["mine_fills"])
     cfg = replace(cfg, **upd)
     objects = None
     if "objects" in doc:
@@ -174,10 +176,14 @@ def _parse_object(i: int, o: dict, cfg: SimConfig, path) -> SceneObject:
             f"({x}, {y}) is outside the {cfg.area_width_m} m x {cfg.area_length_m} m area",
             path, f"objects.{i}")
     variant = o.get("variant", "hot" if kind == "marker" else "")
+    material = o.get("material", "")
+    if material and kind not in MINE_KINDS:
+        raise InvalidInput(f"a {kind} has no mine body (material is for at_mine and ap_mine)",
+                           path, f"objects.{i}.material")
     return SceneObject(
         id=o.get("id", f"OB{i + 1:03d}"), kind=kind, x_m=x, y_m=y,
         depth_m=float(o.get("depth_m", 0.0)), diameter_m=diameter,
-        height_m=default_height_m(kind, diameter), variant=variant)
+        height_m=default_height_m(kind, diameter), variant=variant, material=material)
 
 
 def load_scenario(path: str | Path, base: SimConfig | None = None) -> Scenario:
@@ -201,14 +207,15 @@ def scenario_document(config: SimConfig, objects: list[SceneObject]) -> dict:
         if config.name in ("demo", "trial", "full") else "demo",
         "objects": [{"id": o.id, "kind": o.kind, "x_m": o.x_m, "y_m": o.y_m,
                      "depth_m": o.depth_m, "diameter_m": o.diameter_m,
-                     **({"variant": o.variant} if o.variant else {})} for o in objects],
+                     **({"variant": o.variant} if o.variant else {}),
+                     **({"material": o.material} if o.material else {})} for o in objects],
         **conditions_document(config),
     }
 
 
 def conditions_document(config: SimConfig) -> dict:
     """The scenario fields of ``config``'s weather and ground that differ from the default
-    (``weather``, ``soil``, ``vegetation_cover``)."""
+    (``weather``, ``soil``, ``vegetation_cover``, ``mine_fills``)."""
     out: dict = {}
     w, d = config.weather, WeatherSpec()
     weather: dict = {}
@@ -228,6 +235,8 @@ def conditions_document(config: SimConfig) -> dict:
         out["soil"] = {"type": config.soil_type, "moisture": config.soil_moisture}
     if config.vegetation_cover > 0:
         out["vegetation_cover"] = config.vegetation_cover
+    if config.mine_fills:
+        out["mine_fills"] = list(config.mine_fills)
     return out
 
 

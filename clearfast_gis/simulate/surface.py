@@ -2,8 +2,9 @@
 
 Thermal runs (``clearfast_gis.thermal``): one 1-D background run per soil end-member (dry sand,
 moist sand, disturbed soil: dry sand loosened to 70 % conductivity and 90 % heat capacity) and
-one axisymmetric run per distinct (kind, depth, diameter, height) object in the site soil (the
-mean of the two end-members); objects of the same kind, size and depth share a run. Thin layers
+one axisymmetric run per distinct (kind, depth, diameter, height, body material) object in
+the site soil (the mean of the two end-members); objects of the same kind, size, depth and
+material share a run. Thin layers
 (vegetation, marker plates) come from :mod:`clearfast_gis.simulate.thin_layers`.
 
 Composition on the truth grid for a scan ``s``::
@@ -84,13 +85,24 @@ def soils(soil_type: str | None = None, moisture: float = 0.5) -> dict:
 
 def object_key(obj: SceneObject) -> tuple:
     """Objects with the same key share one thermal run."""
-    return (obj.kind, round(obj.depth_m, 4), round(obj.diameter_m, 4), round(obj.height_m, 4))
+    return (obj.kind, round(obj.depth_m, 4), round(obj.diameter_m, 4), round(obj.height_m, 4),
+            object_material(obj))
+
+
+def object_material(obj: SceneObject) -> str:
+    """The name of the object's body material: its own (a mine's fill), else its kind's
+    (:data:`OBJECT_MATERIAL`; ``aluminium`` for markers, ``disturbed_sand``, ``vegetation``)."""
+    if obj.material:
+        return obj.material
+    return OBJECT_MATERIAL.get(obj.kind, {"marker": "aluminium",
+                                          "disturbed_soil": "disturbed_sand"}.get(
+                                              obj.kind, "vegetation"))
 
 
 def object_diffusivity_m2s(obj: SceneObject, ground: Ground | None = None) -> float:
     """Thermal diffusivity of the object's material (m2/s; NaN for vegetation)."""
     if obj.kind in OBJECT_MATERIAL:
-        return MATERIALS[OBJECT_MATERIAL[obj.kind]].alpha_m2s
+        return MATERIALS[object_material(obj)].alpha_m2s
     if obj.kind == "disturbed_soil":
         return (soils() if ground is None else ground.soils)["disturbed"].alpha_m2s
     if obj.kind == "marker":
@@ -176,7 +188,7 @@ def object_profile(soil, obj: SceneObject, forcing: Forcing, time_s: np.ndarray
                    ) -> ObjectProfile:
     """Radial surface contrast of ``obj`` in ``soil``: run minus the mine-free background."""
     body = BuriedObject(radius_m=obj.radius_m, height_m=max(obj.height_m, 0.01),
-                        depth_m=obj.depth_m, material=MATERIALS[OBJECT_MATERIAL[obj.kind]])
+                        depth_m=obj.depth_m, material=MATERIALS[object_material(obj)])
     radii = np.linspace(0.0, obj.radius_m + 0.2, 48)
     run = simulate_object(soil, body, forcing, time_s, radii_m=radii)
     surface = np.asarray(run.surface_k, float)

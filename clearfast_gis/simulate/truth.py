@@ -28,7 +28,11 @@ from clearfast_gis.atomic import atomic_path, write_text
 from clearfast_gis.simulate.config import Band
 from clearfast_gis.simulate.objects import SceneObject
 from clearfast_gis.simulate.scene import GridSpec
-from clearfast_gis.simulate.surface import OBJECT_MATERIAL, OBJECT_SURFACE, object_diffusivity_m2s
+from clearfast_gis.simulate.surface import (
+    OBJECT_SURFACE,
+    object_diffusivity_m2s,
+    object_material,
+)
 from clearfast_gis.timeutil import format_utc
 
 OBJECT_COLUMNS = ("id", "kind", "x", "y", "depth_m", "diameter_m", "diffusivity_m2s",
@@ -62,9 +66,7 @@ def write_objects(path: str | os.PathLike, objects: list[SceneObject],
     rows = []
     for o in objects:
         alpha = object_diffusivity_m2s(o)
-        material = OBJECT_MATERIAL.get(o.kind, {"marker": "aluminium",
-                                                "disturbed_soil": "disturbed_sand"}.get(
-                                                    o.kind, "vegetation"))
+        material = object_material(o)
         surface = OBJECT_SURFACE.get(o.kind, {"marker": f"marker_{o.variant or 'hot'}",
                                               "disturbed_soil": "disturbed_soil"}.get(
                                                   o.kind, "vegetation"))

@@ -31,7 +31,7 @@ class Material:
     source : str
         Where the figures come from.
     kind : str
-        ``"soil"``, ``"explosive"``, ``"plastic"``, ``"stone"`` or ``"metal"``.
+        ``"soil"``, ``"explosive"``, ``"plastic"``, ``"wood"``, ``"stone"`` or ``"metal"``.
     """
 
     name: str
@@ -97,6 +97,17 @@ MATERIALS: dict[str, Material] = {
         "Dobratz & Crawford (1985) LLNL Explosives Handbook UCRL-52997 (k 0.234 W/m/K, "
         "rho 1.65 g/cm3, c 1.38 kJ/kg/K); Thanh et al. (2008) IEEE TGRS 46(12)", "explosive",
     ),
+    "comp_b": Material(
+        "comp_b", 0.22, 2.01e6, 0.90, 0.30,
+        "Dobratz & Crawford (1985) LLNL Explosives Handbook UCRL-52997 (Composition B, "
+        "RDX/TNT 60/40: k 0.22 W/m/K, rho 1.72 g/cm3, c 1.17 kJ/kg/K)", "explosive",
+    ),
+    "pine": Material(
+        "pine", 0.147, 1.80e6, 0.90, 0.35,
+        "Incropera & DeWitt (2002) Table A.3 (yellow pine, cross grain: k 0.147 W/m/K, "
+        "rho 640 kg/m3, c 2805 J/kg/K; alpha 0.82e-7 m2/s): the body of a wooden box mine",
+        "wood",
+    ),
     "plastic": Material(
         "plastic", 0.30, 1.80e6, 0.92, 0.20,
         "Incropera & DeWitt (2002) Fundamentals of Heat and Mass Transfer, Table A.3 "
@@ -119,15 +130,22 @@ MATERIALS: dict[str, Material] = {
     ),
 }
 """Named materials: soils ``dry_sand``, ``moist_sand`` (as :class:`Soil`), objects ``tnt``,
-``plastic``, ``stone``, ``steel``, ``aluminium``."""
+``comp_b``, ``pine``, ``plastic``, ``stone``, ``steel``, ``aluminium``."""
+
+MINE_FILLS = ("tnt", "comp_b", "plastic", "pine")
+"""The bodies a simulated mine can have (:data:`MATERIALS` names): TNT and Composition B
+fills, a plastic-bodied mine, a wooden box mine. Their diffusivities (0.82-1.7e-7 m2/s) and
+heat capacities (1.8-2.3e6 J/m3/K) span the handbook spread that :data:`MINE_FILL_LOG10_ALPHA`
+states, so a twin drawing from them tests that prior and the fixed heat capacity of the
+inversion's object."""
 
 
 MINE_FILL_LOG10_ALPHA = (-6.92, 0.15)
 """Prior of a mine's diffusivity, (mean, 1 sigma) of log10 alpha (m2 s-1): the fills and
 casings of blast mines, from handbook values (k / rho c): TNT 1.0e-7 (:data:`MATERIALS`),
-Composition B 1.1e-7 (k 0.22 W/m/K, rho 1.72 g/cm3, c 1.17 kJ/kg/K; Dobratz & Crawford
-1985), RDX 1.2e-7, bakelite 1.1e-7, pine (wooden box mines) 1.0e-7 (Incropera & DeWitt 2002,
-Table A.3), plastic casings 1.7e-7 (:data:`MATERIALS`): 1.2e-7, with 1 sigma 0.85-1.7e-7.
+Composition B 1.1e-7 (:data:`MATERIALS` ``comp_b``), RDX 1.2e-7, bakelite 1.1e-7, yellow
+pine (wooden box mines) 0.82e-7 (``pine``), plastic casings 1.7e-7 (``plastic``): 1.2e-7,
+with 1 sigma 0.85-1.7e-7.
 The inversion weighs its fit of an anomaly's diffusivity against it
 (:func:`clearfast_gis.thermal.inversion.invert_anomaly` ``alpha_prior``): a few scans of a
 hot, dry day explain a mine at 3 cm as well as an object at 0.5 cm that conducts like dry

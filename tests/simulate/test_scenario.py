@@ -15,7 +15,8 @@ from clearfast_gis.errors import InvalidInput
 from clearfast_gis.simulate import load_scenario, parse_scenario, preset, simulate_survey
 from clearfast_gis.simulate.objects import KINDS, draw_objects
 from clearfast_gis.simulate.run import site_origin
-from clearfast_gis.simulate.scenario import scenario_document
+from clearfast_gis.simulate.scenario import scenario_document, scenario_schema
+from clearfast_gis.thermal.materials import MINE_FILLS
 
 
 def _doc(**kw) -> dict:
@@ -59,7 +60,9 @@ _objects = st.lists(st.fixed_dictionaries({
     "kind": st.sampled_from(KINDS),
     "x_m": st.floats(0.0, 8.0), "y_m": st.floats(0.0, 6.0),
     "depth_m": st.floats(0.0, 0.3), "diameter_m": st.floats(0.01, 5.0),
-}), max_size=8)
+}), max_size=8).map(lambda objs: [
+    dict(o, material=MINE_FILLS[i % len(MINE_FILLS)]) if o["kind"] in ("at_mine", "ap_mine")
+    and i % 2 else o for i, o in enumerate(objs)])
 
 
 @settings(max_examples=50, deadline=None)
@@ -119,3 +122,77 @@ def test_objects_placed_where_the_scenario_says(tmp_path, small_config):
         r0, c0 = src.index(origin[0] + 1.5, origin[1] + 2.0)
         r1, c1 = src.index(origin[0] + 1.5, origin[1] + 2.6)
     assert abs(float(img[r0, c0]) - float(img[r1, c1])) > 0.3
+
+
+def test_mine_fills_are_the_materials_the_schema_allows():
+    """One list of mine bodies: the schema's enums are :data:`MINE_FILLS`."""
+    schema = scenario_schema()["properties"]
+    assert schema["mine_fills"]["items"]["enum"] == list(MINE_FILLS)
+    assert schema["objects"]["items"]["properties"]["material"]["enum"] == list(MINE_FILLS)
+
+
+def test_mine_fills_drawn_per_mine_keep_the_layout():
+    """``mine_fills`` gives each mine a body from the list, seeded; the layout and every other
+    object are those of the same seed without it."""
+    plain = preset("demo")
+    varied = parse_scenario(_doc(mine_fills=["comp_b", "plastic", "pine"])).config
+    assert varied.mine_fills == ("comp_b", "plastic", "pine")
+    seen = set()
+    for seed in range(6):
+        a = draw_objects(plain, np.random.default_rng(seed))
+        b = draw_objects(varied, np.random.default_rng(seed))
+        again = draw_objects(varied, np.random.default_rng(seed))
+        assert b == again
+        assert [replace(o, material="") for o in b] == a
+        for o in b:
+            if o.kind in ("at_mine", "ap_mine"):
+                assert o.material in varied.mine_fills
+                seen.add(o.material)
+            else:
+                assert o.material == ""
+    assert seen == set(varied.mine_fills)
+    assert all(o.material == "" for o in draw_objects(plain, np.random.default_rng(0)))
+
+
+def test_material_is_for_mines_only():
+    doc = _doc(objects=[{"kind": "stone", "x_m": 1, "y_m": 1, "material": "pine"}])
+    with pytest.raises(InvalidInput) as info:
+        parse_scenario(doc)
+    assert info.value.field == "objects.0.material"
+    with pytest.raises(InvalidInput) as info:
+        parse_scenario(_doc(mine_fills=["tnt", "wax"]))
+    assert info.value.field == "mine_fills.1"
+
+
+def test_a_mines_body_sets_its_truth_and_its_contrast(tmp_path, small_config):
+    """A plastic-bodied and a wooden mine at 2 cm: truth records their material and
+    diffusivity, and each has its own thermal run, the plastic one (higher diffusivity,
+    lower heat capacity than TNT) with a different contrast from a TNT mine's."""
+    from clearfast_gis.simulate.surface import object_key, thermal_truth
+    from clearfast_gis.simulate.twin import build_twin
+    from clearfast_gis.thermal import MATERIALS
+
+    objects = [
+        {"id": "AP-T", "kind": "ap_mine", "x_m": 1.0, "y_m": 2.0, "depth_m": 0.02},
+        {"id": "AP-P", "kind": "ap_mine", "x_m": 2.5, "y_m": 2.0, "depth_m": 0.02,
+         "material": "plastic"},
+        {"id": "AP-W", "kind": "ap_mine", "x_m": 4.0, "y_m": 2.0, "depth_m": 0.02,
+         "material": "pine"},
+    ]
+    scen = parse_scenario(_doc(objects=objects), None, replace(small_config, n_scans=2))
+    res = simulate_survey(tmp_path / "out", scen.config, seed=4, objects=list(scen.objects))
+    with open(res.root / "truth" / "objects.csv") as fh:
+        rows = {r["id"]: r for r in csv.DictReader(fh)}
+    for oid, name in (("AP-T", "tnt"), ("AP-P", "plastic"), ("AP-W", "pine")):
+        assert rows[oid]["material"] == name
+        assert float(rows[oid]["diffusivity_m2s"]) == pytest.approx(MATERIALS[name].alpha_m2s,
+                                                              rel=1e-3)
+    again = load_scenario(res.root / "truth" / "scenario.json", scen.config)
+    assert [o.material for o in again.objects] == ["", "plastic", "pine"]
+    twin = build_twin(scen.config, seed=4)
+    times = twin.start_s + np.array([10.0, 14.0]) * 3600.0
+    truth = thermal_truth(twin.forcing, times, list(scen.objects))
+    runs = [truth.objects[object_key(o)].contrast_k[:, 0] for o in scen.objects]
+    assert len(truth.objects) == 3
+    assert np.max(np.abs(runs[1] - runs[0])) > 0.02
+    assert np.max(np.abs(runs[2] - runs[0])) > 0.02
