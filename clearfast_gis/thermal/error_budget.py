@@ -38,6 +38,10 @@ moves the best fit onto another branch: the chain fits each curve again with the
 ``1 +- G`` (:func:`gain_sigma`; :attr:`Inversion.gain_refits`) and the gain term's shift is the
 larger of the two (:func:`chain_sigmas`).
 
+**The mine's body.** The spread of the fits with the object at each body heat capacity
+(:attr:`Inversion.body_sigma`, :mod:`clearfast_gis.thermal.bodies`) is a term of depth and
+log10 diffusivity, with the gain refits' (not in the curve's own status).
+
 **Errors of the model, as depth (m) and log10 diffusivity terms**, measured by changing one
 link at a time (BENCHMARKS.md, "Depth bias"; ``benchmarks/depth_bias.py``):
 
@@ -148,7 +152,10 @@ def chain_sigmas(inv: Inversion, extra_gain: float = 0.0, refits: bool = True,
     When ``inv`` was fitted again with the gain off by +- 1 sigma (:attr:`Inversion.gain_refits`,
     the same ``extra_gain``), the gain term's shift is the larger of the propagated one and
     the refits' largest move: a flat valley's jump to another branch counts in full
-    (``refits=False``: the propagated shift alone). ``prior=False``: propagated as if the fit
+    (``refits=False``: the propagated shift alone). The spread of the fits of several mine
+    bodies (:attr:`Inversion.body_sigma`, :mod:`clearfast_gis.thermal.bodies`) is one more
+    term, not with ``refits=False``: the curve's own status, which the likelihood reads,
+    does not hang on which body a mine has. ``prior=False``: propagated as if the fit
     had no prior on the diffusivity (the curve's own diffusivity,
     :attr:`Inversion.curve_alpha_m2s`)."""
     sd2 = model_depth_variance(inv.depth_m)
@@ -162,6 +169,9 @@ def chain_sigmas(inv: Inversion, extra_gain: float = 0.0, refits: bool = True,
             shifts[0] = np.maximum(shifts[0], moved)
         sd2 += float(np.sum(shifts[:, 0] ** 2))
         sa2 += float(np.sum(shifts[:, 1] ** 2))
+    if refits and inv.body_sigma is not None:
+        sd2 += float(inv.body_sigma[0]) ** 2
+        sa2 += float(inv.body_sigma[1]) ** 2
     return math.sqrt(sd2), math.sqrt(sa2)
 
 

@@ -106,6 +106,16 @@ class Inversion:
         None without a prior.
     curve_depth_sigma_m : float, optional
         With a prior: the depth's 1-sigma of the fit without it, m. None without a prior.
+    fit_variance_k2 : float, optional
+        The residual variance the fit was weighed with, K² (the residuals' mean square over
+        ``S - 2`` degrees of freedom, inflated for their lag-1 autocorrelation; at least the
+        given noise's square).
+    body_rho_c_jm3k : float, optional
+        The body's volumetric heat capacity, J m-3 K-1, when the fits of several bodies were
+        combined (:func:`clearfast_gis.thermal.bodies.combine_bodies`): their weighted mean.
+    body_sigma : ndarray, shape (2,), optional
+        The 1-sigma spread of (depth m, log10 alpha) over those fits, which
+        :func:`clearfast_gis.thermal.error_budget.chain_sigmas` adds. None when not made.
     """
 
     depth_m: float
@@ -127,6 +137,9 @@ class Inversion:
     curve_alpha_sigma_m2s: float | None = None
     curve_status: str | None = None
     curve_depth_sigma_m: float | None = None
+    fit_variance_k2: float | None = None
+    body_rho_c_jm3k: float | None = None
+    body_sigma: np.ndarray | None = field(default=None, compare=False)
 
     @property
     def diffusivity_m2s(self) -> float:
@@ -312,6 +325,7 @@ def invert_anomaly(
         curve_alpha_sigma_m2s=None if curve is None else curve.alpha_sigma_m2s,
         curve_status=None if curve is None else curve.status,
         curve_depth_sigma_m=None if curve is None else float(curve.sigma[0]),
+        fit_variance_k2=float(s2),
     )
 
 

@@ -139,6 +139,14 @@ heat capacities (1.8-2.3e6 J/m3/K) span the handbook spread that :data:`MINE_FIL
 states, so a twin drawing from them tests that prior and the fixed heat capacity of the
 inversion's object."""
 
+MINE_BODY_RHO_C_JM3K = (1.8e6, 2.05e6, 2.3e6)
+"""The volumetric heat capacities, J m-3 K-1, a mine's body is fitted with: the handbook
+range of mine bodies (explosive fills 2.0-2.3e6: TNT 2.28, Composition B 2.01; a plastic
+body 1.8; yellow pine 1.8; :data:`MATERIALS`) in three steps.
+Each anomaly is fitted with the object at each (:mod:`clearfast_gis.thermal.bodies`): the
+curve, not TNT's value, says which body it is, or the spread of the fits says how much that
+matters."""
+
 
 MINE_FILL_LOG10_ALPHA = (-6.92, 0.15)
 """Prior of a mine's diffusivity, (mean, 1 sigma) of log10 alpha (m2 s-1): the fills and

@@ -16,20 +16,33 @@ computes.
 from __future__ import annotations
 
 import dataclasses
+import functools
 
 import numpy as np
 
 from clearfast_gis.detection.features import AnomalyFeatures
 from clearfast_gis.progress import NULL_PROGRESS, Progress
+from clearfast_gis.thermal.bodies import fit_bodies
 from clearfast_gis.thermal.canopy import cover_gain_sigma, seen_share, under_canopy
 from clearfast_gis.thermal.error_budget import gain_sigma, with_chain_errors
 from clearfast_gis.thermal.forcing import Forcing
 from clearfast_gis.thermal.inversion import Inversion, invert_anomaly
-from clearfast_gis.thermal.materials import MATERIALS, MINE_FILL_LOG10_ALPHA, Soil, get_soil
+from clearfast_gis.thermal.materials import (
+    MATERIALS,
+    MINE_BODY_RHO_C_JM3K,
+    MINE_FILL_LOG10_ALPHA,
+    Soil,
+    get_soil,
+)
 from clearfast_gis.thermal.measure import anomaly_measure
 from clearfast_gis.thermal.soilfit import fit_soil_diffusivity, soil_log_field
 from clearfast_gis.thermal.surface_fit import fit_surface_balance, fit_surface_parameters
-from clearfast_gis.thermal.table import DEFAULT_HEIGHT_M, SiteTable, build_site_table
+from clearfast_gis.thermal.table import (
+    DEFAULT_HEIGHT_M,
+    OBJECT_RHO_C_JM3K,
+    SiteTable,
+    build_site_table,
+)
 from clearfast_gis.units import ZERO_CELSIUS_K
 
 SURFACE_SENSOR_MAX_DEPTH_M = 0.05
@@ -126,14 +139,16 @@ def radius_nodes(radii_m: np.ndarray, max_nodes: int = 3) -> np.ndarray:
 
 
 def chain_site_table(soil_forcing: Forcing, soil: Soil, radius_m, times_s: np.ndarray,
-                     canopy: float = 0.0, height_m: float = DEFAULT_HEIGHT_M) -> SiteTable:
+                     canopy: float = 0.0, height_m: float = DEFAULT_HEIGHT_M,
+                     object_rho_c_jm3k: float = OBJECT_RHO_C_JM3K) -> SiteTable:
     """The chain's site table: disc means (:data:`CHAIN_TABLE_CENTRE`) of objects in ``soil``
     under ``soil_forcing`` (the weather under the site's canopy,
     :func:`clearfast_gis.thermal.canopy.under_canopy`), their contrast as seen through a
     canopy of cover ``canopy`` (times ``1 - canopy``). ``radius_m`` float or (Q,) m;
-    ``times_s`` (N,) UTC epoch s; ``height_m`` the objects' height, m."""
+    ``times_s`` (N,) UTC epoch s; ``height_m`` the objects' height, m;
+    ``object_rho_c_jm3k`` the objects' volumetric heat capacity, J m-3 K-1."""
     table = build_site_table(soil_forcing, soil, radius_m, times_s, height_m=height_m,
-                             centre=CHAIN_TABLE_CENTRE)
+                             centre=CHAIN_TABLE_CENTRE, object_rho_c_jm3k=object_rho_c_jm3k)
     if canopy > 0:
         seen = seen_share(canopy)
         table = dataclasses.replace(table, contrast_k=seen * table.contrast_k,
@@ -186,23 +201,31 @@ def characterise(features: list[AnomalyFeatures], times_s: np.ndarray, forcing: 
     measures = [anomaly_measure(f) for f in features]
     blur = np.zeros(len(features)) if blur_m is None else np.asarray(blur_m, dtype=float)
     forcing = under_canopy(forcing, canopy)
-    tables: dict = {}
-    for kind in sorted({m.kind for m in measures if m.kind is not None},
-                       key=lambda k: k.diameter_m):
-        progress.message(f"thermal model table for {kind.name} ({kind.diameter_m:.3f} m)")
-        tables[kind] = chain_site_table(forcing, soil, kind.radius_m, times_s, canopy,
-                                        kind.height_m)
+    shapes: dict = {kind: (kind.radius_m, kind.height_m) for kind in
+                    sorted({m.kind for m in measures if m.kind is not None},
+                           key=lambda k: k.diameter_m)}
     others = [m.radius_m for m in measures if m.kind is None and m.radius_m > 0]
     if others:  # footprints of no mine type's size: cylinders of the footprint's radius
         nodes = radius_nodes(np.array(others))
-        progress.message("thermal model table for radii "
-                         f"{', '.join(f'{r:.2f}' for r in nodes)} m")
-        tables[None] = chain_site_table(forcing, soil, nodes if nodes.size > 1
-                                        else float(nodes[0]), times_s, canopy)
+        shapes[None] = (nodes if nodes.size > 1 else float(nodes[0]), DEFAULT_HEIGHT_M)
         lo, hi = float(nodes.min()), float(nodes.max())
         measures = [m if m.kind is not None else
                     dataclasses.replace(m, radius_m=float(np.clip(m.radius_m, lo, hi)))
                     for m in measures]
+    tables: dict = {}
+
+    def table(kind, body: int) -> SiteTable:
+        """The site table of ``kind``'s shape and body ``body``, built on first use."""
+        if (kind, body) not in tables:
+            radius, height = shapes[kind]
+            rc = MINE_BODY_RHO_C_JM3K[body]
+            name = (f"{kind.name} ({kind.diameter_m:.3f} m)" if kind is not None else
+                    "radii " + ", ".join(f"{r:.2f}" for r in np.atleast_1d(radius)) + " m")
+            progress.message(f"thermal model table for {name}, body {rc / 1e6:.1f} MJ/m3/K")
+            tables[kind, body] = chain_site_table(forcing, soil, radius, times_s, canopy,
+                                                  height, rc)
+        return tables[kind, body]
+
     extra = cover_gain_sigma(canopy)
     out: dict[int, Inversion] = {}
     progress.start("characterise", len(features))
@@ -210,11 +233,13 @@ def characterise(features: list[AnomalyFeatures], times_s: np.ndarray, forcing: 
         centre = first_band(f.centre_k) + ZERO_CELSIUS_K
         ring = first_band(f.ring_k) + ZERO_CELSIUS_K
         if (np.isfinite(centre) & np.isfinite(ring)).sum() >= 4 and m.over_m > 0:
-            inv = invert_anomaly(times_s, centre, ring, forcing, soil, m.radius_m,
-                                 table=tables[m.kind], over_m=m.over_m, ring_m=m.ring_m,
-                                 blur_m=float(b) if np.isfinite(b) else 0.0, gain=gain,
-                                 gain_sigma=gain_sigma(extra),
-                                 alpha_prior=MINE_FILL_LOG10_ALPHA)
+            fit = functools.partial(
+                invert_anomaly, times_s, centre, ring, forcing, soil, m.radius_m,
+                over_m=m.over_m, ring_m=m.ring_m,
+                blur_m=float(b) if np.isfinite(b) else 0.0, gain=gain,
+                gain_sigma=gain_sigma(extra), alpha_prior=MINE_FILL_LOG10_ALPHA)
+            inv = fit_bodies(lambda i, fit=fit, kind=m.kind: fit(table=table(kind, i)),
+                             MINE_BODY_RHO_C_JM3K, MINE_FILL_LOG10_ALPHA, gain_sigma(extra))
             out[f.id] = with_chain_errors(inv, extra)
         progress.advance()
     progress.close()

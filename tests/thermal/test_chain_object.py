@@ -5,8 +5,11 @@ ring, :mod:`clearfast_gis.detection.features`) and seen in apparent temperature:
 contrast times a gain of 0.9 (a sand of band emissivity about 0.88 in 8-9.2 um).
 
 :func:`clearfast_gis.thermal.sitesoil.characterise` models it as the mine type over the
-footprint against the ring, times the gain it is given: within 0.15 cm and 12 %. Without the
-gain the same curves come out shallow with a higher diffusivity."""
+footprint against the ring, times the gain it is given: within 0.25 cm and 12 % (0.15 cm
+while the object's body was TNT's alone; the chain now averages over the mine bodies'
+heat capacities, :mod:`clearfast_gis.thermal.bodies`, which these curves cannot tell apart
+within the curve's own error terms). Without the gain the same curves come out shallow with
+a higher diffusivity."""
 
 from __future__ import annotations
 
@@ -36,11 +39,11 @@ def mean_over(prof, a, b):
     return (prof[:, sel] * w).sum(axis=1) / w.sum()
 
 
-def anomaly(forcing, times, depth_m, ident, soil=SOIL):
-    """The features of an AP mine at ``depth_m`` in ``soil`` as the detector would give
-    them."""
+def anomaly(forcing, times, depth_m, ident, soil=SOIL, material=TNT):
+    """The features of an AP mine of body ``material`` at ``depth_m`` in ``soil`` as the
+    detector would give them."""
     run = thermal.simulate_object(soil, thermal.BuriedObject(AP.radius_m, AP.height_m, depth_m,
-                                                             TNT), forcing, times,
+                                                             material), forcing, times,
                                   radii_m=RADII_M)
     prof = GAIN * (np.asarray(run.surface_k) - np.asarray(run.background_k)[:, None])
     amp = np.sqrt(np.mean(prof**2, axis=0))
@@ -71,7 +74,7 @@ def test_the_chain_recovers_depth_and_diffusivity_with_the_gain(forcing, case):
     for f, depth in zip(feats, depths, strict=True):
         inv = out[f.id]
         assert inv.status == "ok"
-        assert abs(inv.depth_m - depth) < 0.0015, (depth, inv.depth_m)
+        assert abs(inv.depth_m - depth) < 0.0025, (depth, inv.depth_m)
         assert abs(math.log(inv.alpha_m2s / TNT.alpha_m2s)) < math.log(1.12)
         assert abs(inv.depth_m - depth) < 2 * inv.depth_sigma_m
 
