@@ -221,7 +221,7 @@ def characterise(features: list[AnomalyFeatures], times_s: np.ndarray, forcing: 
             rc = MINE_BODY_RHO_C_JM3K[body]
             name = (f"{kind.name} ({kind.diameter_m:.3f} m)" if kind is not None else
                     "radii " + ", ".join(f"{r:.2f}" for r in np.atleast_1d(radius)) + " m")
-            progress.message(f"thermal model table for {name}, body {rc / 1e6:.1f} MJ/m3/K")
+            progress.message(f"thermal model table for {name}, body {rc / 1e6:.2f} MJ/m3/K")
             tables[kind, body] = chain_site_table(forcing, soil, radius, times_s, canopy,
                                                   height, rc)
         return tables[kind, body]
