@@ -13,7 +13,8 @@ from pathlib import Path
 
 import numpy as np
 
-MINE_KINDS = ("at_mine", "ap_mine")
+from clearfast_gis.simulate.objects import MINE_KINDS
+
 MINE_CUES = ("at_mine", "ap_mine")
 
 MATCH_MARGIN_M = 0.05

@@ -46,27 +46,30 @@ from clearfast_gis.thermal.error_budget import GAIN_TERM, OFFSET_TERM_K
 from clearfast_gis.thermal.inversion import Inversion
 
 
+def _estimates(invs: Sequence[Inversion]) -> tuple[np.ndarray, np.ndarray]:
+    """Depths (B,) m and log10 diffusivities (B,) of the fits; NaN where not positive."""
+    depth = np.array([i.depth_m for i in invs], dtype=float)
+    la = np.array([math.log10(i.alpha_m2s) if i.alpha_m2s > 0 else np.nan for i in invs])
+    return depth, la
+
+
 def body_weights(invs: Sequence[Inversion], alpha_prior: tuple[float, float] | None,
                  gain: float = GAIN_TERM) -> np.ndarray:
     """Normalised weights (B,) of the fits of B bodies (module notes); 0 for a fit whose
     depth or diffusivity is not finite, all 0 when none is. ``gain``: the curve's 1-sigma
     relative amplitude error (:func:`clearfast_gis.thermal.error_budget.gain_sigma`)."""
+    depth, la = _estimates(invs)
     n = np.array([np.size(i.model_contrast_k) for i in invs], dtype=float)
     rms = np.array([i.residual_rms_k for i in invs], dtype=float)
-    s2s = np.array([np.nan if i.fit_variance_k2 is None else i.fit_variance_k2
-                    for i in invs], dtype=float)
-    la = np.array([math.log10(i.alpha_m2s) if i.alpha_m2s > 0 else np.nan for i in invs])
-    depth = np.array([i.depth_m for i in invs], dtype=float)
     ok = np.isfinite(rms) & np.isfinite(la) & np.isfinite(depth)
     if not ok.any():
         return np.zeros(len(invs))
-    s2 = np.nanmin(np.where(ok, s2s, np.nan)) if np.isfinite(s2s[ok]).any() else np.nan
-    if not (np.isfinite(s2) and s2 > 0):
-        s2 = max(float(np.min(rms[ok] ** 2)), 1e-12)
-    models = [np.asarray(i.model_contrast_k, dtype=float) for i, good in zip(invs, ok,
-                                                                              strict=True)
-              if good]
-    s2 += float(np.mean([np.mean((gain * m) ** 2) for m in models])) + OFFSET_TERM_K**2
+    # a fit made without a recorded variance counts its mean squared residual
+    s2s = np.array([i.residual_rms_k**2 if i.fit_variance_k2 is None else i.fit_variance_k2
+                    for i in invs], dtype=float)
+    curve = np.array([np.mean((gain * np.asarray(i.model_contrast_k, dtype=float)) ** 2)
+                      for i in invs])
+    s2 = max(float(np.min(s2s[ok])), 1e-12) + (float(np.mean(curve[ok])) + OFFSET_TERM_K**2)
     chi2 = n * rms**2 / s2
     if alpha_prior is not None:
         chi2 = chi2 + ((la - alpha_prior[0]) / alpha_prior[1]) ** 2
@@ -103,16 +106,17 @@ def combine_bodies(invs: Sequence[Inversion], rho_c_jm3k: Sequence[float],
     """
     if len(invs) != len(rho_c_jm3k):
         raise ValueError(f"{len(invs)} fits for {len(rho_c_jm3k)} bodies")
+    if len(invs) == 1:
+        return invs[0]
     w = body_weights(invs, alpha_prior, gain)
-    if len(invs) == 1 or not w.any():
-        return invs[0] if len(invs) == 1 else invs[int(np.argmax(w))]
+    if not w.any():
+        return invs[0]
     use = w > 0
-    depth = np.array([i.depth_m for i in invs], dtype=float)
-    la = np.array([math.log10(i.alpha_m2s) if i.alpha_m2s > 0 else np.nan for i in invs])
-    d_mean = float(np.sum(w[use] * depth[use]))
-    la_mean = float(np.sum(w[use] * la[use]))
-    spread = np.array([math.sqrt(float(np.sum(w[use] * (depth[use] - d_mean) ** 2))),
-                       math.sqrt(float(np.sum(w[use] * (la[use] - la_mean) ** 2)))])
+    depth, la = (v[use] for v in _estimates(invs))
+    wu = w[use]
+    d_mean, la_mean = float(np.sum(wu * depth)), float(np.sum(wu * la))
+    spread = np.sqrt([float(np.sum(wu * (depth - d_mean) ** 2)),
+                      float(np.sum(wu * (la - la_mean) ** 2))])
     base = invs[int(np.argmax(w))]
     refits = base.gain_refits
     if refits is not None:
