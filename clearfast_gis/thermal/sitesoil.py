@@ -43,6 +43,7 @@ from clearfast_gis.thermal.table import (
     SiteTable,
     build_site_table,
 )
+from clearfast_gis.thermal.tables_ahead import TablesAhead
 from clearfast_gis.units import ZERO_CELSIUS_K
 
 SURFACE_SENSOR_MAX_DEPTH_M = 0.05
@@ -212,35 +213,63 @@ def characterise(features: list[AnomalyFeatures], times_s: np.ndarray, forcing: 
         measures = [m if m.kind is not None else
                     dataclasses.replace(m, radius_m=float(np.clip(m.radius_m, lo, hi)))
                     for m in measures]
-    tables: dict = {}
 
-    def table(kind, body: int) -> SiteTable:
-        """The site table of ``kind``'s shape and body ``body``, built on first use."""
-        if (kind, body) not in tables:
-            radius, height = shapes[kind]
-            rc = MINE_BODY_RHO_C_JM3K[body]
+    def build(key: tuple) -> SiteTable:
+        """The site table of a mine type's shape (``key[0]``) and body (``key[1]``)."""
+        kind, body = key
+        radius, height = shapes[kind]
+        return chain_site_table(forcing, soil, radius, times_s, canopy, height,
+                                MINE_BODY_RHO_C_JM3K[body])
+
+    def ask(key: tuple) -> None:
+        """Ask for a table ahead, saying which."""
+        kind, body = key
+        if tables.ahead(key):
+            radius = shapes[kind][0]
             name = (f"{kind.name} ({kind.diameter_m:.3f} m)" if kind is not None else
                     "radii " + ", ".join(f"{r:.2f}" for r in np.atleast_1d(radius)) + " m")
-            progress.message(f"thermal model table for {name}, body {rc / 1e6:.2f} MJ/m3/K")
-            tables[kind, body] = chain_site_table(forcing, soil, radius, times_s, canopy,
-                                                  height, rc)
-        return tables[kind, body]
+            progress.message(f"thermal model table for {name}, body "
+                             f"{MINE_BODY_RHO_C_JM3K[body] / 1e6:.2f} MJ/m3/K")
 
     extra = cover_gain_sigma(canopy)
+    middle = len(MINE_BODY_RHO_C_JM3K) // 2
+    fits: dict[int, tuple] = {}  # anomaly id -> (fit function, mine type, middle body's fit)
     out: dict[int, Inversion] = {}
-    progress.start("characterise", len(features))
-    for f, m, b in zip(features, measures, blur, strict=True):
-        centre = first_band(f.centre_k) + ZERO_CELSIUS_K
-        ring = first_band(f.ring_k) + ZERO_CELSIUS_K
-        if (np.isfinite(centre) & np.isfinite(ring)).sum() >= 4 and m.over_m > 0:
-            fit = functools.partial(
-                invert_anomaly, times_s, centre, ring, forcing, soil, m.radius_m,
-                over_m=m.over_m, ring_m=m.ring_m,
-                blur_m=float(b) if np.isfinite(b) else 0.0, gain=gain,
-                gain_sigma=gain_sigma(extra), alpha_prior=MINE_FILL_LOG10_ALPHA)
-            inv = fit_bodies(lambda i, fit=fit, kind=m.kind: fit(table=table(kind, i)),
+    with TablesAhead(build) as tables:
+        for f, m, b in zip(features, measures, blur, strict=True):
+            centre = first_band(f.centre_k) + ZERO_CELSIUS_K
+            ring = first_band(f.ring_k) + ZERO_CELSIUS_K
+            if (np.isfinite(centre) & np.isfinite(ring)).sum() >= 4 and m.over_m > 0:
+                fits[f.id] = (functools.partial(
+                    invert_anomaly, times_s, centre, ring, forcing, soil, m.radius_m,
+                    over_m=m.over_m, ring_m=m.ring_m,
+                    blur_m=float(b) if np.isfinite(b) else 0.0, gain=gain,
+                    gain_sigma=gain_sigma(extra), alpha_prior=MINE_FILL_LOG10_ALPHA),
+                    m.kind, None)
+        kinds = list(dict.fromkeys(kind for _fit, kind, _ in fits.values()))
+        for kind in kinds:
+            ask((kind, middle))
+        # every curve with the middle body first, a mine type at a time (the next types'
+        # tables are built meanwhile, and the other bodies' tables of a type from its first
+        # curve that is not weak_contrast); the results do not depend on this order
+        progress.start("characterise", len(features))
+        for fid in sorted(fits, key=lambda k: kinds.index(fits[k][1])):
+            fit, kind, _ = fits[fid]
+            first = fit(table=tables.get((kind, middle)))
+            fits[fid] = (fit, kind, first)
+            if first.status != "weak_contrast":
+                for body in range(len(MINE_BODY_RHO_C_JM3K)):
+                    ask((kind, body))  # the middle one was asked for already
+            progress.advance()
+        progress.advance(len(features) - len(fits))
+        progress.close()
+        # then each curve over the bodies (thermal.bodies; the middle body's fit reused)
+        progress.start("characterise, other bodies", len(fits))
+        for fid, (fit, kind, first) in fits.items():
+            inv = fit_bodies(lambda i, fit=fit, kind=kind, first=first: first if i == middle
+                             else fit(table=tables.get((kind, i))),
                              MINE_BODY_RHO_C_JM3K, MINE_FILL_LOG10_ALPHA, gain_sigma(extra))
-            out[f.id] = with_chain_errors(inv, extra)
-        progress.advance()
+            out[fid] = with_chain_errors(inv, extra)
+            progress.advance()
     progress.close()
     return out
