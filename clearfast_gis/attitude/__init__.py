@@ -24,6 +24,7 @@ from clearfast_gis.attitude.neighbours import (
     neighbour_ties,
 )
 from clearfast_gis.attitude.scan import (
+    ATTITUDE_SAMPLES,
     AttitudeFit,
     ReferenceMosaic,
     reposed,
@@ -33,7 +34,7 @@ from clearfast_gis.attitude.scan import (
 from clearfast_gis.attitude.ties import GroundTie, LinearTie, displacement_jacobian, moved_point
 
 __all__ = [
-    "Adjustment", "AttitudeFit", "GroundTie", "LinearTie", "ReferenceMosaic",
+    "ATTITUDE_SAMPLES", "Adjustment", "AttitudeFit", "GroundTie", "LinearTie", "ReferenceMosaic",
     "adjust_attitudes", "attitude_at", "displacement_jacobian", "fit_attitude",
     "interpolation_weights",
     "frame_windows", "mosaic_ties", "moved_point", "neighbour_pairs", "neighbour_ties",

@@ -6,6 +6,7 @@ import hashlib
 import json
 from dataclasses import asdict, dataclass, fields
 
+from clearfast_gis.attitude.scan import ATTITUDE_SAMPLES
 from clearfast_gis.detection.clutter import THRESHOLD_SNR
 
 MOSAIC_PARAMETERS = ("pixel_size_m", "coregister", "search_m", "attitude_samples",
@@ -31,7 +32,8 @@ class ProcessOptions:
     search_m : float
         Largest displacement searched when measuring a frame against the reference, metres.
     attitude_samples : int
-        Frames per scan measured against each reference for the attitude fit.
+        Frames per scan measured against each reference for the attitude fit
+        (:data:`~clearfast_gis.attitude.scan.ATTITUDE_SAMPLES`).
     adjust_attitude : bool
         After every scan has its own attitude, adjust the attitudes of all scans at once
         (:mod:`clearfast_gis.attitude.adjust`): a smooth attitude over time, pinned by the
@@ -89,7 +91,7 @@ class ProcessOptions:
     pixel_size_m: float | None = None
     coregister: bool = True
     search_m: float = 0.6
-    attitude_samples: int = 40
+    attitude_samples: int = ATTITUDE_SAMPLES
     adjust_attitude: bool = True
     frame_refine: bool = False
     max_shift_m: float = 0.1
