@@ -189,7 +189,6 @@ def neighbour_ties(job, order: list[int], scan_records: dict[int, dict],
     reach = max(abs(o) for o in offsets)
     reference = None if reference_scan is None else \
         job.reference(reference_scan, scan_records[reference_scan], model)
-    n_samples = NEIGHBOUR_SAMPLES
     loaded: dict[int, object] = {}
     ties: list[LinearTie] = []
     pairs = neighbour_pairs(order, offsets)
@@ -202,16 +201,16 @@ def neighbour_ties(job, order: list[int], scan_records: dict[int, dict],
             loaded[n] = reference if n == reference_scan else \
                 job.reference(n, scan_records[n], model)
         others = [n for m, n in pairs if m == s]
-        windows = frame_windows(loaded[s].source, n_samples)  # shared by the neighbours
+        windows = frame_windows(loaded[s].source, NEIGHBOUR_SAMPLES)  # shared by the neighbours
         for found in thread_map(lambda other, here=loaded[s], near=loaded, w=windows:
                                 mosaic_ties(here, near[other], job.ctx.camera, job.grid,
-                                            n_samples=n_samples, windows=w), others):
+                                            windows=w), others):
             ties += found
         if reference is not None and s != reference_scan:
             whole = temporal_transform(reference.values[0], loaded[s].values[0])
             if whole.converged:
                 ties += mosaic_ties(loaded[s], reference, job.ctx.camera, job.grid,
-                                    n_samples=n_samples, windows=windows, transform=whole)
+                                    windows=windows, transform=whole)
         if progress is not None:
             progress.advance(1, scan=s)
     if progress is not None:

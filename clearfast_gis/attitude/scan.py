@@ -34,8 +34,8 @@ save a fifth of the fit's time."""
 
 ATTITUDE_SAMPLES = 24
 """Frames of a scan, spread over its scan pattern, registered against each reference to tie
-its attitude (``ProcessOptions.attitude_samples``; also the frames per scan of the refined
-adjustment's neighbour ties, :mod:`clearfast_gis.attitude.neighbours`). Three angles are
+its attitude (``ProcessOptions.attitude_samples``; the refined adjustment's neighbour ties
+take :data:`~clearfast_gis.attitude.neighbours.NEIGHBOUR_SAMPLES`). Three angles are
 fitted to twice as many ties plus the markers. On the trial (251 positions a scan), 24
 instead of 40 frames left the misregistration from the true poses as it was, median / max
 0.28 / 0.44 px against 0.28 / 0.46 px (seed 0, steady lift; 0.26 / 0.42 and 0.29 / 0.44

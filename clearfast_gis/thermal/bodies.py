@@ -130,6 +130,13 @@ def combine_bodies(invs: Sequence[Inversion], rho_c_jm3k: Sequence[float],
         body_rho_c_jm3k=float(np.sum(w * np.asarray(rho_c_jm3k, dtype=float))))
 
 
+def other_bodies_needed(first: Inversion) -> bool:
+    """Whether a curve whose fit with the middle body is ``first`` is fitted with the other
+    bodies too: not when that fit is ``weak_contrast`` (no depth to report, whatever the
+    body)."""
+    return first.status != "weak_contrast"
+
+
 def fit_bodies(fit: Callable[[int], Inversion], rho_c_jm3k: Sequence[float],
                alpha_prior: tuple[float, float] | None = None,
                gain: float = GAIN_TERM) -> Inversion:
@@ -140,10 +147,10 @@ def fit_bodies(fit: Callable[[int], Inversion], rho_c_jm3k: Sequence[float],
     the curve's relative amplitude error)."""
     middle = len(rho_c_jm3k) // 2
     first = fit(middle)
-    if first.status == "weak_contrast" or len(rho_c_jm3k) == 1:
+    if not other_bodies_needed(first) or len(rho_c_jm3k) == 1:
         return first
     fits = [first if i == middle else fit(i) for i in range(len(rho_c_jm3k))]
     return combine_bodies(fits, rho_c_jm3k, alpha_prior, gain)
 
 
-__all__ = ["body_weights", "combine_bodies", "fit_bodies"]
+__all__ = ["body_weights", "combine_bodies", "fit_bodies", "other_bodies_needed"]

@@ -22,7 +22,7 @@ import numpy as np
 
 from clearfast_gis.detection.features import AnomalyFeatures
 from clearfast_gis.progress import NULL_PROGRESS, Progress
-from clearfast_gis.thermal.bodies import fit_bodies
+from clearfast_gis.thermal.bodies import fit_bodies, other_bodies_needed
 from clearfast_gis.thermal.canopy import cover_gain_sigma, seen_share, under_canopy
 from clearfast_gis.thermal.error_budget import gain_sigma, with_chain_errors
 from clearfast_gis.thermal.forcing import Forcing
@@ -233,7 +233,8 @@ def characterise(features: list[AnomalyFeatures], times_s: np.ndarray, forcing: 
 
     extra = cover_gain_sigma(canopy)
     middle = len(MINE_BODY_RHO_C_JM3K) // 2
-    fits: dict[int, tuple] = {}  # anomaly id -> (fit function, mine type, middle body's fit)
+    fits: dict[int, tuple] = {}  # anomaly id -> (fit function, mine type)
+    firsts: dict[int, Inversion] = {}  # anomaly id -> its fit with the middle body
     out: dict[int, Inversion] = {}
     with TablesAhead(build) as tables:
         for f, m, b in zip(features, measures, blur, strict=True):
@@ -245,19 +246,18 @@ def characterise(features: list[AnomalyFeatures], times_s: np.ndarray, forcing: 
                     over_m=m.over_m, ring_m=m.ring_m,
                     blur_m=float(b) if np.isfinite(b) else 0.0, gain=gain,
                     gain_sigma=gain_sigma(extra), alpha_prior=MINE_FILL_LOG10_ALPHA),
-                    m.kind, None)
-        kinds = list(dict.fromkeys(kind for _fit, kind, _ in fits.values()))
+                    m.kind)
+        kinds = list(dict.fromkeys(kind for _fit, kind in fits.values()))
         for kind in kinds:
             ask((kind, middle))
         # every curve with the middle body first, a mine type at a time (the next types'
         # tables are built meanwhile, and the other bodies' tables of a type from its first
-        # curve that is not weak_contrast); the results do not depend on this order
+        # curve that needs them); the results do not depend on this order
         progress.start("characterise", len(features))
         for fid in sorted(fits, key=lambda k: kinds.index(fits[k][1])):
-            fit, kind, _ = fits[fid]
-            first = fit(table=tables.get((kind, middle)))
-            fits[fid] = (fit, kind, first)
-            if first.status != "weak_contrast":
+            fit, kind = fits[fid]
+            firsts[fid] = fit(table=tables.get((kind, middle)))
+            if other_bodies_needed(firsts[fid]):
                 for body in range(len(MINE_BODY_RHO_C_JM3K)):
                     ask((kind, body))  # the middle one was asked for already
             progress.advance()
@@ -265,7 +265,8 @@ def characterise(features: list[AnomalyFeatures], times_s: np.ndarray, forcing: 
         progress.close()
         # then each curve over the bodies (thermal.bodies; the middle body's fit reused)
         progress.start("characterise, other bodies", len(fits))
-        for fid, (fit, kind, first) in fits.items():
+        for fid, (fit, kind) in fits.items():
+            first = firsts[fid]
             inv = fit_bodies(lambda i, fit=fit, kind=kind, first=first: first if i == middle
                              else fit(table=tables.get((kind, i))),
                              MINE_BODY_RHO_C_JM3K, MINE_FILL_LOG10_ALPHA, gain_sigma(extra))
