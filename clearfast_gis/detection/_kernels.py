@@ -40,6 +40,20 @@ def _row_max(row, other, best) -> None:  # pragma: no cover - compiled
         best[c] = m
 
 
+@numba.njit(cache=True, nogil=True, inline="always")
+def _can_raise(row, lim, down, lim_down, rises) -> None:  # pragma: no cover - compiled
+    """``rises[c]``: pixel ``c`` of a final ``row`` can still raise its right neighbour or
+    one of its three neighbours in the row below (``down``), i.e. one of them lies below both
+    the pixel and its own mask (``lim``, ``lim_down``). Written without short-circuits: the
+    comparisons go either way at random, so branches would be mispredicted half the time."""
+    for c in range(1, row.size - 1):
+        v = row[c]
+        rises[c] = (((row[c + 1] < v) & (row[c + 1] < lim[c + 1]))
+                    | ((down[c - 1] < v) & (down[c - 1] < lim_down[c - 1]))
+                    | ((down[c] < v) & (down[c] < lim_down[c]))
+                    | ((down[c + 1] < v) & (down[c + 1] < lim_down[c + 1])))
+
+
 @numba.njit(cache=True, nogil=True)
 def _hybrid_dilation(f: np.ndarray, g: np.ndarray) -> None:
     """In-place reconstruction by dilation of ``f`` under ``g`` (2-D, same dtype).
@@ -66,6 +80,7 @@ def _hybrid_dilation(f: np.ndarray, g: np.ndarray) -> None:
     # anti-raster scan: N- = right, down-left, down, down-right (same split); then queue the
     # pixels that can still raise a later neighbour, in the scan's order
     queue = np.empty(n, dtype=np.int64)  # circular, n slots
+    rises = np.zeros(w, dtype=np.bool_)
     inq = np.zeros(n, dtype=np.uint8)
     head = 0
     tail = 0  # next free slot
@@ -78,12 +93,9 @@ def _hybrid_dilation(f: np.ndarray, g: np.ndarray) -> None:
             m = best[c] if best[c] > right else right
             right = m if m < lim[c] else lim[c]
             row[c] = right
+        _can_raise(row, lim, down, lim_down, rises)
         for c in range(w - 2, 0, -1):
-            v = row[c]
-            if ((row[c + 1] < v and row[c + 1] < lim[c + 1])
-                    or (down[c - 1] < v and down[c - 1] < lim_down[c - 1])
-                    or (down[c] < v and down[c] < lim_down[c])
-                    or (down[c + 1] < v and down[c + 1] < lim_down[c + 1])):
+            if rises[c]:
                 p = r * w + c
                 queue[tail] = p
                 tail += 1  # fewer than n pixels are queued here: no wrap
