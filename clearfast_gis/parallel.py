@@ -2,14 +2,18 @@
 
 The heavy kernels release the GIL (numba ``nogil``, OpenCV, GDAL), so threads share one
 process's memory and run on all cores. ``CLEARFAST_THREADS`` caps the threads (a batch worker
-sets it so that its processes do not oversubscribe the machine).
+sets it so that its processes do not oversubscribe the machine). Work that holds the GIL
+throughout (drawing figures) runs in worker processes instead (:class:`ProcessChunks`).
 """
 
 from __future__ import annotations
 
 import os
+import pickle
+import subprocess
+import sys
 from collections import deque
-from collections.abc import Callable, Iterable, Iterator
+from collections.abc import Callable, Iterable, Iterator, Sequence
 from concurrent.futures import Future, ThreadPoolExecutor
 from contextlib import contextmanager
 from typing import TypeVar
@@ -111,3 +115,85 @@ def serial_kernels() -> Iterator[None]:
         cv2.setNumThreads(before)
         if sitk_before is not None:
             sitk.ProcessObject.SetGlobalDefaultNumberOfThreads(sitk_before)
+
+
+class ProcessChunks:
+    """``fn`` over contiguous chunks of ``items`` in worker processes, started at once;
+    :meth:`result` waits and returns ``fn``'s outputs concatenated in the order of ``items``.
+
+    For work that holds the GIL throughout (matplotlib drawing figures), which threads cannot
+    share out. ``fn`` is a module-level function that takes a list of items and returns a list
+    of as many results; it, the items and the results must pickle, and each result must not
+    depend on the chunk it was computed in, so that the results are the same with any number
+    of processes. Each worker is a fresh ``python -m clearfast_gis.worker`` (the caller's
+    script is not imported again, as ``multiprocessing`` would). ``fn`` runs in this process
+    instead, when :meth:`result` is called, with one process (:func:`n_threads` is 1) and for
+    the chunks whose worker failed (so that an error is raised here, as itself). Use as a
+    context manager: leaving it stops the workers.
+    """
+
+    def __init__(self, fn: Callable[[list[T]], list[R]], items: Sequence[T],
+                 processes: int | None = None) -> None:
+        self._fn = fn
+        items = list(items)
+        n = min(n_threads() if processes is None else max(1, int(processes)), len(items))
+        n = max(n, 1)
+        self._chunks = [items[len(items) * i // n:len(items) * (i + 1) // n] for i in range(n)]
+        self._workers: list[tuple[subprocess.Popen, Future]] = []
+        if n == 1:
+            return
+        env = {**os.environ, "PYTHONPATH": os.pathsep.join(p for p in sys.path if p),
+               "CLEARFAST_THREADS": "1"}
+        for chunk in self._chunks:
+            proc = subprocess.Popen([sys.executable, "-m", "clearfast_gis.worker"],
+                                    stdin=subprocess.PIPE, stdout=subprocess.PIPE,
+                                    stderr=subprocess.DEVNULL, env=env)
+            # each worker's pipes on a thread of its own: a large result must not wait for
+            # the input of another worker to be written
+            self._workers.append((proc, _PIPES.submit(_exchange, proc,
+                                                      pickle.dumps((fn, chunk)))))
+
+    def result(self) -> list[R]:
+        """The results in the order of the items (the first error of ``fn`` is raised)."""
+        if not self._workers:
+            return self._fn(self._chunks[0])
+        out: list[R] = []
+        try:
+            for chunk, (_proc, answer) in zip(self._chunks, self._workers, strict=True):
+                got = answer.result()
+                out.extend(self._fn(chunk) if got is None else got)
+        finally:
+            self.close()
+        return out
+
+    def close(self) -> None:
+        """Stop the workers still running."""
+        for proc, _ in self._workers:
+            if proc.poll() is None:
+                proc.kill()
+            proc.wait()
+
+    def __enter__(self) -> ProcessChunks:
+        return self
+
+    def __exit__(self, *exc) -> None:
+        self.close()
+
+
+_PIPES = ThreadPoolExecutor(thread_name_prefix="clearfast-pipe")
+"""Threads that feed the worker processes of :class:`ProcessChunks` and read their answers
+(they wait on pipes: no CPU)."""
+
+
+def _exchange(proc: subprocess.Popen, request: bytes) -> list | None:
+    """Send a worker its request; its unpickled answer, or None when it failed."""
+    try:
+        data, _ = proc.communicate(request)
+    except OSError:
+        return None
+    if proc.returncode != 0:
+        return None
+    try:
+        return pickle.loads(data)
+    except (pickle.UnpicklingError, EOFError, AttributeError, ImportError):
+        return None

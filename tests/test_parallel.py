@@ -69,3 +69,46 @@ def test_an_error_drops_the_calls_not_started():
     with pytest.raises(RuntimeError, match="stop"):
         thread_map(f, range(200), threads=2)
     assert len(started) < 20  # not the 200
+
+
+def _squares_and_pids(items: list[int]) -> list[tuple[int, int]]:
+    """A chunk's work for the ProcessChunks tests (module level: workers import it)."""
+    import os
+
+    return [(x * x, os.getpid()) for x in items]
+
+
+def _fails_on_seven(items: list[int]) -> list[int]:
+    if 7 in items:
+        raise ValueError("seven")
+    return items
+
+
+def test_process_chunks_keep_order_and_run_in_other_processes():
+    import os
+
+    from clearfast_gis.parallel import ProcessChunks
+
+    with ProcessChunks(_squares_and_pids, range(11), processes=3) as work:
+        out = work.result()
+    assert [v for v, _ in out] == [x * x for x in range(11)]
+    pids = {p for _, p in out}
+    assert len(pids) == 3 and os.getpid() not in pids
+
+
+def test_process_chunks_with_one_process_run_here(monkeypatch):
+    import os
+
+    from clearfast_gis.parallel import ProcessChunks
+
+    monkeypatch.setenv("CLEARFAST_THREADS", "1")
+    out = ProcessChunks(_squares_and_pids, [2, 3]).result()
+    assert out == [(4, os.getpid()), (9, os.getpid())]
+
+
+def test_a_failed_worker_chunk_is_computed_here_and_its_error_raised():
+    from clearfast_gis.parallel import ProcessChunks
+
+    with pytest.raises(ValueError, match="seven"):
+        ProcessChunks(_fails_on_seven, range(10), processes=2).result()
+    assert ProcessChunks(_fails_on_seven, range(7), processes=2).result() == list(range(7))

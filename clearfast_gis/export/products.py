@@ -108,6 +108,88 @@ def _pick_day_night(times_s: np.ndarray, lon_deg: float) -> tuple[int, int]:
     return day, night
 
 
+def _geopackage_and_overview(products: Path, survey, anomalies, records: list[dict], stack,
+                             valid: np.ndarray, times_s: np.ndarray, transform, epsg: int
+                             ) -> tuple[list[dict], dict, bytes]:
+    """Write ``anomalies.gpkg``; return the ranked suspects, the expected operating curve and
+    the report's overview figure (PNG)."""
+    import geopandas as gpd
+
+    from clearfast_gis.evaluation.operating import expected_operating_curve
+    from clearfast_gis.export import default_styles, suspects_frame, write_geopackage
+    from clearfast_gis.report.figures import mosaic_panel_png
+
+    crs = f"EPSG:{epsg}"
+    pixel = abs(transform.a)
+    outlines = label_outlines(anomalies.labels, transform)
+    every = suspects_frame(records, epsg, products / "anomalies.gpkg")
+    ranked = sorted((r for r in records if r.get("set_aside_reason") is None),
+                    key=lambda r: r["priority"])
+    suspects = suspects_frame(ranked, epsg, products / "anomalies.gpkg")
+    candidates = suspects_frame([r for r in records if r.get("set_aside_reason") is not None],
+                                epsg, products / "anomalies.gpkg")
+    ids = [f.id for f in anomalies.features]
+    outline_geoms = [outlines.get(i) for i in ids]
+    anomalies_layer = gpd.GeoDataFrame(
+        every.drop(columns="geometry").reset_index(drop=True),
+        geometry=gpd.GeoSeries(outline_geoms, crs=crs), crs=crs)
+    footprint_m2 = float(valid.sum() * pixel * pixel)
+    curve = expected_operating_curve(np.array([r["p_mine"] for r in ranked]), footprint_m2)
+    footprint = gpd.GeoDataFrame(
+        {"survey_id": [survey.manifest["survey_id"]],
+         "area_m2": [footprint_m2],
+         "n_scans": [int(stack.n_scans)]},
+        geometry=gpd.GeoSeries([footprint_polygon(valid, transform, 2 * pixel)], crs=crs),
+        crs=crs)
+    layers = {"anomalies": anomalies_layer, "suspects": suspects, "candidates": candidates,
+              "markers": _markers_frame(survey, epsg, anomalies.markers), "footprint": footprint}
+    write_geopackage(products / "anomalies.gpkg", layers, default_styles(layers),
+                     timestamp_s=float(survey.end_s))
+
+    # the report's overview
+    lon = float(survey.manifest["site"]["longitude_deg"])
+    day, night = _pick_day_night(times_s, lon)
+    # the overview draws the suspects (not the set-aside candidates) and labels only the mine
+    # indications, as the planner's map does, so that labels never bury the map
+    shown = [(rec, geom) for rec, geom in zip(records, outline_geoms, strict=True)
+             if rec.get("set_aside_reason") is None and geom is not None and not geom.is_empty]
+    indication = mine_indications(pd.DataFrame(
+        {"p_mine": [rec.get("p_mine") for rec, _ in shown],
+         "class_cue": [rec["class_cue"] for rec, _ in shown]}, dtype=object).infer_objects())
+    outline_xy, labels_txt, cols = [], [], []
+    for (rec, geom), is_mine in zip(shown, indication, strict=True):
+        g = max(getattr(geom, "geoms", [geom]), key=lambda p: p.area)
+        outline_xy.append(np.asarray(g.exterior.coords))
+        labels_txt.append(rec["anomaly_id"].rsplit("-", 1)[-1] if is_mine else "")
+        cols.append("#e31a1c" if is_mine else
+                    "#969696" if rec["class_cue"] == "clutter" else "#ff7f00")
+    overview = mosaic_panel_png([stack.scan(day)[0], stack.scan(night)[0]],
+                                [times_s[day], times_s[night]], transform, outline_xy,
+                                labels_txt, cols, epsg)
+    return ranked, curve, overview
+
+
+def _curve_inputs(records: list[dict], anomalies, times_s: np.ndarray) -> list:
+    """Each anomaly's contrast curve (with the model's fit when it has one), for the
+    report's figures."""
+    from clearfast_gis.report.figures import CurveInput
+
+    out = []
+    for rec, f in zip(records, anomalies.features, strict=True):
+        inv = anomalies.inversions.get(f.id)
+        c = np.asarray(f.contrast_k, dtype=float)
+        c = c[:, 0] if c.ndim == 2 else c
+        model = None if inv is None else np.asarray(inv.model_contrast_k)
+        model_t = None
+        if model is not None and model.shape == times_s.shape:
+            model_t = times_s
+        elif model is not None:
+            model = None
+        title = f"{rec['anomaly_id']}  {rec['class_cue']}  status {rec['status']}"
+        out.append(CurveInput(times_s, c, model_t, model, title))
+    return out
+
+
 def write_anomaly_products(products: Path, ctx, survey, anomalies, records: list[dict],
                            stack, valid: np.ndarray, times_s: np.ndarray, transform,
                            epsg: int,
@@ -140,76 +222,21 @@ def write_anomaly_products(products: Path, ctx, survey, anomalies, records: list
     timings : dict
         Stage timings so far, seconds.
     """
-    import geopandas as gpd
-
     from clearfast_gis.detection.likelihood import likelihood_model_id
-    from clearfast_gis.evaluation.operating import expected_operating_curve
-    from clearfast_gis.export import default_styles, suspects_frame, write_geopackage
+    from clearfast_gis.parallel import ProcessChunks
     from clearfast_gis.report import ReportData, write_report
-    from clearfast_gis.report.figures import ContrastCurves, mosaic_panel_png, operating_curve_png
+    from clearfast_gis.report.figures import contrast_curves_png, operating_curve_png
     from clearfast_gis.report.html import diffusivity_text
 
-    crs = f"EPSG:{epsg}"
     pixel = abs(transform.a)
-    outlines = label_outlines(anomalies.labels, transform)
-    every = suspects_frame(records, epsg, products / "anomalies.gpkg")
-    ranked = sorted((r for r in records if r.get("set_aside_reason") is None),
-                    key=lambda r: r["priority"])
-    suspects = suspects_frame(ranked, epsg, products / "anomalies.gpkg")
-    candidates = suspects_frame([r for r in records if r.get("set_aside_reason") is not None],
-                                epsg, products / "anomalies.gpkg")
-    ids = [f.id for f in anomalies.features]
-    outline_geoms = [outlines.get(i) for i in ids]
-    anomalies_layer = gpd.GeoDataFrame(
-        every.drop(columns="geometry").reset_index(drop=True),
-        geometry=gpd.GeoSeries(outline_geoms, crs=crs), crs=crs)
-    footprint_m2 = float(valid.sum() * pixel * pixel)
-    curve = expected_operating_curve(np.array([r["p_mine"] for r in ranked]), footprint_m2)
-    footprint = gpd.GeoDataFrame(
-        {"survey_id": [survey.manifest["survey_id"]],
-         "area_m2": [footprint_m2],
-         "n_scans": [int(stack.n_scans)]},
-        geometry=gpd.GeoSeries([footprint_polygon(valid, transform, 2 * pixel)], crs=crs),
-        crs=crs)
-    layers = {"anomalies": anomalies_layer, "suspects": suspects, "candidates": candidates,
-              "markers": _markers_frame(survey, epsg, anomalies.markers), "footprint": footprint}
-    write_geopackage(products / "anomalies.gpkg", layers, default_styles(layers),
-                     timestamp_s=float(survey.end_s))
-
-    # report
-    lon = float(survey.manifest["site"]["longitude_deg"])
-    day, night = _pick_day_night(times_s, lon)
-    # the overview draws the suspects (not the set-aside candidates) and labels only the mine
-    # indications, as the planner's map does, so that labels never bury the map
-    shown = [(rec, geom) for rec, geom in zip(records, outline_geoms, strict=True)
-             if rec.get("set_aside_reason") is None and geom is not None and not geom.is_empty]
-    indication = mine_indications(pd.DataFrame(
-        {"p_mine": [rec.get("p_mine") for rec, _ in shown],
-         "class_cue": [rec["class_cue"] for rec, _ in shown]}, dtype=object).infer_objects())
-    outline_xy, labels_txt, cols = [], [], []
-    for (rec, geom), is_mine in zip(shown, indication, strict=True):
-        g = max(getattr(geom, "geoms", [geom]), key=lambda p: p.area)
-        outline_xy.append(np.asarray(g.exterior.coords))
-        labels_txt.append(rec["anomaly_id"].rsplit("-", 1)[-1] if is_mine else "")
-        cols.append("#e31a1c" if is_mine else
-                    "#969696" if rec["class_cue"] == "clutter" else "#ff7f00")
-    overview = mosaic_panel_png([stack.scan(day)[0], stack.scan(night)[0]],
-                                [times_s[day], times_s[night]], transform, outline_xy,
-                                labels_txt, cols, epsg)
-    curves = {}
-    plotter = ContrastCurves()
-    for rec, f in zip(records, anomalies.features, strict=True):
-        inv = anomalies.inversions.get(f.id)
-        c = np.asarray(f.contrast_k, dtype=float)
-        c = c[:, 0] if c.ndim == 2 else c
-        model = None if inv is None else np.asarray(inv.model_contrast_k)
-        model_t = None
-        if model is not None and model.shape == times_s.shape:
-            model_t = times_s
-        elif model is not None:
-            model = None
-        title = f"{rec['anomaly_id']}  {rec['class_cue']}  status {rec['status']}"
-        curves[rec["anomaly_id"]] = plotter.png(times_s, c, model_t, model, title)
+    # the contrast curves are drawn in worker processes (matplotlib holds the GIL throughout)
+    # while this one writes the GeoPackage and draws the overview
+    with ProcessChunks(contrast_curves_png, _curve_inputs(records, anomalies, times_s)
+                       ) as drawing:
+        ranked, curve, overview = _geopackage_and_overview(
+            products, survey, anomalies, records, stack, valid, times_s, transform, epsg)
+        curves = dict(zip((rec["anomaly_id"] for rec in records), drawing.result(),
+                          strict=True))
     residuals = [r.get("residual_px") for r in scan_records.values()
                  if r.get("residual_px") is not None]
     applied = sum(1 for r in scan_records.values() for c in r["corrections"].values()
