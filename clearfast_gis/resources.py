@@ -20,9 +20,10 @@ _CLEAR_REFS = Path("/proc/self/clear_refs")
 
 
 def cpu_seconds() -> float:
-    """User + system CPU time of this process and all its threads, seconds."""
-    ru = resource.getrusage(resource.RUSAGE_SELF)
-    return ru.ru_utime + ru.ru_stime
+    """User + system CPU time of this process, all its threads and the worker processes it has
+    waited for (:class:`clearfast_gis.parallel.ProcessChunks`), seconds."""
+    return sum(ru.ru_utime + ru.ru_stime for ru in (resource.getrusage(resource.RUSAGE_SELF),
+                                                    resource.getrusage(resource.RUSAGE_CHILDREN)))
 
 
 def peak_rss_mb() -> float:
