@@ -18,7 +18,6 @@ from __future__ import annotations
 
 import numba
 import numpy as np
-from scipy import ndimage
 
 from clearfast_gis.detection._radix import radix_order_statistics
 from clearfast_gis.detection.morphology import dilate_disk, erode_disk
@@ -234,7 +233,30 @@ def reconstruction_by_erosion(seed: np.ndarray, mask: np.ndarray) -> np.ndarray:
                                                  top - mask.astype(dtype))).astype(dtype)
     return -reconstruction_by_dilation(-seed, -mask)
 
-_EIGHT = np.ones((3, 3), dtype=bool)
+@numba.njit(cache=True, nogil=True)
+def _flood(mask: np.ndarray, seeds: np.ndarray, out: np.ndarray) -> None:
+    """Set ``out`` on the 8-connected components of ``mask`` (bool (H, W)) that hold a pixel
+    of ``seeds`` (flat indices of pixels of ``mask``), by a depth-first fill from each seed:
+    the work is that of the pixels reached, not of the image."""
+    h, w = mask.shape
+    stack = np.empty(h * w, dtype=np.int64)  # a pixel is pushed once (``out`` set at the push)
+    for seed in seeds:
+        r0, c0 = seed // w, seed % w
+        if out[r0, c0]:
+            continue
+        out[r0, c0] = True
+        stack[0] = seed
+        top = 1
+        while top > 0:
+            top -= 1
+            p = stack[top]
+            r, c = p // w, p % w
+            for rr in range(max(r - 1, 0), min(r + 2, h)):
+                for cc in range(max(c - 1, 0), min(c + 2, w)):
+                    if mask[rr, cc] and not out[rr, cc]:
+                        out[rr, cc] = True
+                        stack[top] = rr * w + cc
+                        top += 1
 
 
 def binary_reconstruction(seed: np.ndarray, mask: np.ndarray) -> np.ndarray:
@@ -248,17 +270,17 @@ def binary_reconstruction(seed: np.ndarray, mask: np.ndarray) -> np.ndarray:
     Returns
     -------
     ndarray of bool (H, W)
-        Equal to ``skimage.morphology.reconstruction(seed & mask, mask)`` cast to bool.
+        Equal to ``skimage.morphology.reconstruction(seed & mask, mask)`` cast to bool; filled
+        from the seeds (:func:`_flood`), so that sparse masks cost little.
     """
-    mask = np.asarray(mask, dtype=bool)
-    seed = np.asarray(seed, dtype=bool) & mask
-    labels, n = ndimage.label(mask, structure=_EIGHT)
-    if n == 0:
-        return np.zeros_like(mask)
-    keep = np.zeros(n + 1, dtype=bool)
-    keep[labels[seed]] = True
-    keep[0] = False
-    return keep[labels]
+    mask = np.ascontiguousarray(mask, dtype=bool)
+    seed = np.asarray(seed, dtype=bool)
+    if seed.shape != mask.shape or mask.ndim != 2:
+        raise ValueError(f"seed and mask must be 2-D arrays of one shape, got {seed.shape} "
+                         f"and {mask.shape}")
+    out = np.zeros(mask.shape, dtype=bool)
+    _flood(mask, np.flatnonzero(seed & mask), out)
+    return out
 
 
 def top_hat_by_reconstruction(f: np.ndarray, d1_px: float) -> np.ndarray:

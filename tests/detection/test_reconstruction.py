@@ -77,6 +77,20 @@ def test_bool_reconstruction_and_binary_labels():
     np.testing.assert_array_equal(binary_reconstruction(seed, mask), ref)
 
 
+@given(st.integers(1, 40), st.integers(1, 40), st.floats(0.2, 0.8), st.floats(0.0, 0.2),
+       st.integers(0, 2**32 - 1))
+@settings(max_examples=60, deadline=None)
+def test_binary_reconstruction_property_matches_skimage(h, w, density, seed_share, rs):
+    """The seeded fill against scikit-image (8-connectivity), seeds inside and outside the
+    mask, empty seeds and masks included."""
+    rng = np.random.default_rng(rs)
+    mask = rng.random((h, w)) < density
+    seed = rng.random((h, w)) < seed_share
+    ref = sk_reconstruction((seed & mask).astype(np.uint8), mask.astype(np.uint8),
+                            footprint=np.ones((3, 3), bool)).astype(bool)
+    np.testing.assert_array_equal(binary_reconstruction(seed, mask), ref)
+
+
 @settings(max_examples=40, deadline=None)
 @given(arrays(np.float32, st.tuples(st.integers(1, 20), st.integers(1, 20)),
               elements=st.floats(-1e3, 1e3, width=32)),
