@@ -132,10 +132,11 @@ REGISTRY: dict[str, KernelPair] = {
         "clearfast_gis.radiometry._reference:inverse_planck",
         "radiance-uniform table (numba)",
         "the paper's 0.1 K table + `np.interp`"),
-    "apparent_frame": KernelPair(
-        "clearfast_gis.radiometry._kernels:apparent_frame",
-        "clearfast_gis.radiometry._reference:apparent_frame",
-        "calibration, atmosphere and inverse Planck fused per pixel (numba)",
+    "apparent_frames": KernelPair(
+        "clearfast_gis.radiometry._kernels:apparent_frames",
+        "clearfast_gis.radiometry._reference:apparent_frames",
+        "calibration, atmosphere and inverse Planck fused per pixel, a block of frames row "
+        "by row (numba)",
         "`raw_to_apparent` step by step (numpy)"),
     "heat_equation": KernelPair(
         "clearfast_gis.thermal._kernels:heat_equation",

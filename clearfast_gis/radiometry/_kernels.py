@@ -3,12 +3,13 @@
 - :func:`inverse_planck` (the registry's ``inverse_planck``): Eq. 5 on the radiance-uniform
   inverse table of :class:`~clearfast_gis.radiometry.table.BandTable`, by index arithmetic
   and linear interpolation (numba); :func:`_uniform_hermite` evaluates the forward table.
-- :func:`apparent_frame` (``apparent_frame``): counts to apparent temperature in one pass over
-  a frame. :func:`clearfast_gis.radiometry.stage.apparent_temperature_frames` chains, per
-  frame, the blend of two calibrations in time, Eq. 1 (counts to radiance), Eq. 4
-  (atmosphere) and Eq. 5 (the inverse Planck table); the kernel does the same arithmetic
-  pixel by pixel in one loop (numba, no temporaries, GIL released); it agrees with the array
-  chain to 1 mK (tested).
+- :func:`apparent_frames` (``apparent_frames``): counts to apparent temperature in one pass
+  over a block of frames. :func:`clearfast_gis.radiometry.stage.apparent_temperature_frames`
+  chains, per frame, the blend of two calibrations in time, Eq. 1 (counts to radiance),
+  Eq. 4 (atmosphere) and Eq. 5 (the inverse Planck table); the kernel does the same
+  arithmetic pixel by pixel in one loop (numba, no temporaries, GIL released), row by row
+  over the block's frames so that the calibration images' rows are read once per block; it
+  agrees with the array chain to 1 mK (tested).
 
 The references are in :mod:`clearfast_gis.radiometry._reference`.
 """
@@ -60,29 +61,37 @@ def _uniform_hermite(x, x0, dx, y, dy, out):
             out[i] = np.nan
 
 
-@numba.njit(cache=True, nogil=True)
-def _fused(raw, gain0, offset0, gain1, offset1, w1, tau, b_air, r0, inv_dr, t_nodes,
+@numba.njit(cache=True, nogil=True, error_model="numpy")
+def _fused(raw, gains, offsets, first, second, w1, tau, b_air, r0, inv_dr, t_nodes,
            out):  # pragma: no cover - compiled
-    h, w = raw.shape
+    p, h, w = raw.shape
     n = t_nodes.size - 1
-    w0 = 1.0 - w1
     s_row = np.empty(w, dtype=np.float64)  # table coordinate of each pixel of a row
+    # row by row, every frame of the block: a row of the calibration images is read from
+    # memory once for all the frames (it stays in the cache), not once per frame
     for i in range(h):
-        # the arithmetic of a row first (no branch, so the loop vectorises), then the table
-        for j in range(w):
-            g = w0 * gain0[i, j] + w1 * gain1[i, j]
-            o = w0 * offset0[i, j] + w1 * offset1[i, j]
-            t = tau[i, j]
-            surf = (raw[i, j] * g + o - (1.0 - t) * b_air) / t
-            s_row[j] = (surf - r0) * inv_dr
-        for j in range(w):
-            s = s_row[j]
-            if s >= 0.0 and s <= n:  # False for NaN
-                k = min(int(s), n - 1)
-                f = s - k
-                out[i, j] = t_nodes[k] + f * (t_nodes[k + 1] - t_nodes[k])
-            else:
-                out[i, j] = np.nan
+        for k in range(p):
+            wk1 = w1[k]
+            w0 = 1.0 - wk1
+            gain0, offset0 = gains[first[k], i], offsets[first[k], i]
+            gain1, offset1 = gains[second[k], i], offsets[second[k], i]
+            counts, trans, b_k = raw[k, i], tau[k, i], b_air[k]
+            # the arithmetic of a row first (no branch, so the loop vectorises), then the table
+            for j in range(w):
+                g = w0 * gain0[j] + wk1 * gain1[j]
+                o = w0 * offset0[j] + wk1 * offset1[j]
+                t = trans[j]
+                surf = (counts[j] * g + o - (1.0 - t) * b_k) / t
+                s_row[j] = (surf - r0) * inv_dr
+            row = out[k, i]
+            for j in range(w):
+                s = s_row[j]
+                if s >= 0.0 and s <= n:  # False for NaN
+                    m = min(int(s), n - 1)
+                    f = s - m
+                    row[j] = t_nodes[m] + f * (t_nodes[m + 1] - t_nodes[m])
+                else:
+                    row[j] = np.nan
 
 
 def inverse_planck(table: BandTable, r: np.ndarray, dtype=np.float32) -> np.ndarray:
@@ -97,24 +106,39 @@ def inverse_planck(table: BandTable, r: np.ndarray, dtype=np.float32) -> np.ndar
     return out.reshape(r.shape)
 
 
-def apparent_frame(raw: np.ndarray, parts: list, tau, t_air_k: float, b_air: float, table,
-                    out: np.ndarray) -> None:
-    """One frame's apparent temperature (kelvin) into ``out`` on the fast kernels:
-    calibration (``parts``: weighted gain/offset of the calibration events), atmosphere
-    (transmittance ``tau``, scalar or (H, W); air radiance ``b_air``) and inverse Planck fused
-    per pixel (the registry's ``apparent_frame``, called by
+def apparent_frames(raw: np.ndarray, parts: list, tau: list, t_air_k: np.ndarray,
+                    b_air: np.ndarray, table, out: np.ndarray) -> None:
+    """Frames' apparent temperature (kelvin) into ``out`` on the fast kernels: calibration,
+    atmosphere and inverse Planck fused per pixel, the frames of a block together (the
+    registry's ``apparent_frames``, called by
     :func:`clearfast_gis.radiometry.stage.apparent_temperature_frames`).
 
-    ``raw`` (H, W) raw counts; ``parts`` one calibration (weight 1) or two blended linearly in
-    time (weights summing to 1), as (GainOffset, weight); ``b_air`` band radiance of a
-    blackbody at the air temperature, W m-2 sr-1 (path radiance ``(1 - tau) b_air``);
-    ``table`` the band's :class:`~clearfast_gis.radiometry.table.BandTable`; ``out`` float32
-    (H, W), written with the apparent temperature, kelvin (NaN at uncalibrated pixels and
-    outside the table); ``t_air_k`` is used by the reference only.
+    ``raw`` (P, H, W) raw counts; ``parts`` per frame, one calibration (weight 1) or two
+    blended linearly in time (weights summing to 1), as (GainOffset, weight); ``tau`` per
+    frame its transmittance, a scalar or (H, W) (used as float32); ``t_air_k`` (P,) is used
+    by the reference only; ``b_air`` (P,) band radiance of a blackbody at the air
+    temperature, W m-2 sr-1 (path radiance ``(1 - tau) b_air``); ``table`` the band's
+    :class:`~clearfast_gis.radiometry.table.BandTable`; ``out`` float32 (P, H, W), written
+    with the apparent temperature, kelvin (NaN at uncalibrated pixels and outside the table).
     """
-    tau_map = np.broadcast_to(np.asarray(tau, dtype=np.float32), raw.shape)
-    c0 = parts[0][0]
-    c1, w1 = parts[1] if len(parts) > 1 else (c0, 0.0)
-    _fused(raw, c0.gain, c0.offset, c1.gain, c1.offset, float(w1),
-           np.ascontiguousarray(tau_map, dtype=np.float32), float(b_air),
-           table.inverse_radiance0, 1.0 / table.inverse_step, table.inverse_t_k, out)
+    n = raw.shape[0]
+    slot: dict[int, int] = {}
+    images = []
+    first = np.empty(n, dtype=np.int64)
+    second = np.empty(n, dtype=np.int64)
+    w1 = np.zeros(n, dtype=np.float64)
+    for k, frame_parts in enumerate(parts):
+        for cal, _w in frame_parts:
+            if id(cal) not in slot:
+                slot[id(cal)] = len(images)
+                images.append(cal)
+        first[k] = slot[id(frame_parts[0][0])]
+        second[k] = slot[id(frame_parts[-1][0])]
+        w1[k] = float(frame_parts[1][1]) if len(frame_parts) > 1 else 0.0
+    trans = np.empty(raw.shape, dtype=np.float32)
+    for k, t in enumerate(tau):
+        trans[k] = np.asarray(t, dtype=np.float32)
+    _fused(np.ascontiguousarray(raw), np.stack([c.gain for c in images]),
+           np.stack([c.offset for c in images]), first, second, w1, trans,
+           np.asarray(b_air, dtype=np.float64), table.inverse_radiance0,
+           1.0 / table.inverse_step, table.inverse_t_k, out)

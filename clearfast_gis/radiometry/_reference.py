@@ -16,9 +16,11 @@ def inverse_planck(table: BandTable, r: np.ndarray, dtype=np.float32) -> np.ndar
     return apparent_temperature_paper(r, table).astype(dtype)
 
 
-def apparent_frame(raw: np.ndarray, parts: list, tau, t_air_k: float, b_air: float,
-                        table, out: np.ndarray) -> None:
-    """:func:`clearfast_gis.radiometry._kernels.apparent_frame` on the reference kernels, step
-    by step (:func:`~clearfast_gis.radiometry.apparent.raw_to_apparent`, air temperature
-    ``t_air_k``)."""
-    out[...] = raw_to_apparent(raw, blend_gain_offsets(parts), tau, t_air_k, table)
+def apparent_frames(raw: np.ndarray, parts: list, tau: list, t_air_k: np.ndarray,
+                    b_air: np.ndarray, table, out: np.ndarray) -> None:
+    """:func:`clearfast_gis.radiometry._kernels.apparent_frames` on the reference kernels,
+    frame by frame and step by step (:func:`~clearfast_gis.radiometry.apparent.raw_to_apparent`,
+    air temperature ``t_air_k``)."""
+    for k in range(raw.shape[0]):
+        out[k] = raw_to_apparent(raw[k], blend_gain_offsets(parts[k]), tau[k],
+                                 float(t_air_k[k]), table)

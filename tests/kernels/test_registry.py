@@ -107,28 +107,36 @@ def _inverse_planck():
     return (table, rad, np.float64), agree
 
 
-def _apparent_frame():
+def _apparent_frames():
     from clearfast_gis.radiometry.calibration import GainOffset
     from clearfast_gis.radiometry.table import BandTable
 
     rng = np.random.default_rng(4)
     table = BandTable(8.0, 9.2)
     shape = (48, 64)
-    raw = rng.integers(9000, 12000, size=shape).astype(np.uint16)
-    gain = np.full(shape, 2.0e-4) * rng.uniform(0.95, 1.05, shape)
-    offset = np.full(shape, 1.2)
-    valid = np.ones(shape, dtype=bool)
-    valid[0, :3] = False
-    gain[~valid] = offset[~valid] = np.nan
-    parts = [(GainOffset(gain, offset, valid), 1.0)]
-    t_air = 295.0
+    raw = rng.integers(9000, 12000, size=(3, *shape)).astype(np.uint16)
+
+    def calibration(level):
+        gain = np.full(shape, 2.0e-4) * rng.uniform(0.95, 1.05, shape)
+        offset = np.full(shape, level)
+        valid = np.ones(shape, dtype=bool)
+        valid[0, :3] = False
+        gain[~valid] = offset[~valid] = np.nan
+        return GainOffset(gain, offset, valid)
+
+    early, late = calibration(1.2), calibration(1.3)
+    # one calibration alone, two blended in time, the other alone; a scalar transmittance,
+    # a map and another scalar
+    parts = [[(early, 1.0)], [(early, 0.25), (late, 0.75)], [(late, 1.0)]]
+    taus = [0.93, rng.uniform(0.9, 0.95, shape), 0.97]
+    t_air = np.array([295.0, 296.0, 297.0])
 
     def agree(a, b):
         _same_image(a, b, atol=0.03)  # K: the fast table against the paper's 0.1 K table
-        assert np.isfinite(a).sum() > 3000
+        assert np.isfinite(a).sum() > 3 * 3000
 
-    return (raw, parts, 0.93, t_air, float(table.radiance(t_air)), table,
-            np.empty(shape, np.float32)), agree
+    return (raw, parts, taus, t_air, table.radiance(t_air), table,
+            np.empty((3, *shape), np.float32)), agree
 
 
 def _heat_equation():
@@ -152,7 +160,7 @@ EXAMPLES = {
     "ground_maps": _maps,
     "resample": _resample,
     "inverse_planck": _inverse_planck,
-    "apparent_frame": _apparent_frame,
+    "apparent_frames": _apparent_frames,
     "heat_equation": _heat_equation,
 }
 
