@@ -144,14 +144,18 @@ class ProcessChunks:
             return
         env = {**os.environ, "PYTHONPATH": os.pathsep.join(p for p in sys.path if p),
                "CLEARFAST_THREADS": "1"}
-        for chunk in self._chunks:
-            proc = subprocess.Popen([sys.executable, "-m", "clearfast_gis.worker"],
-                                    stdin=subprocess.PIPE, stdout=subprocess.PIPE,
-                                    stderr=subprocess.DEVNULL, env=env)
-            # each worker's pipes on a thread of its own: a large result must not wait for
-            # the input of another worker to be written
-            self._workers.append((proc, _PIPES.submit(_exchange, proc,
-                                                      pickle.dumps((fn, chunk)))))
+        try:
+            procs = [subprocess.Popen([sys.executable, "-m", "clearfast_gis.worker"],
+                                      stdin=subprocess.PIPE, stdout=subprocess.PIPE,
+                                      stderr=subprocess.DEVNULL, env=env)
+                     for _ in self._chunks]
+        except OSError:  # no interpreter to start (an embedding program): all of it here
+            self._chunks = [items]
+            return
+        # each worker's pipes on a thread of its own: a large result must not wait for the
+        # input of another worker to be written
+        self._workers = [(proc, _PIPES.submit(_exchange, proc, pickle.dumps((fn, chunk))))
+                         for proc, chunk in zip(procs, self._chunks, strict=True)]
 
     def result(self) -> list[R]:
         """The results in the order of the items (the first error of ``fn`` is raised)."""

@@ -112,3 +112,14 @@ def test_a_failed_worker_chunk_is_computed_here_and_its_error_raised():
     with pytest.raises(ValueError, match="seven"):
         ProcessChunks(_fails_on_seven, range(10), processes=2).result()
     assert ProcessChunks(_fails_on_seven, range(7), processes=2).result() == list(range(7))
+
+
+def test_process_chunks_without_an_interpreter_to_start_run_here(monkeypatch):
+    import os
+    import sys
+
+    from clearfast_gis.parallel import ProcessChunks
+
+    monkeypatch.setattr(sys, "executable", "/nonexistent/python")
+    out = ProcessChunks(_squares_and_pids, range(4), processes=2).result()
+    assert out == [(x * x, os.getpid()) for x in range(4)]

@@ -235,6 +235,15 @@ def apparent_temperature_frames(
     elif out.shape != raw.shape or out.dtype != np.float32:
         raise InvalidInput(f"output {out.dtype} {out.shape} does not match frames {raw.shape}",
                            field="out")
+    def frame_tau(k: int):
+        """Frame ``k``'s transmittance: 1, a scalar or an (H, W) map."""
+        if tau_all is None:
+            return 1.0
+        if coarse:
+            return cv2.resize(np.asarray(tau_all[k], dtype=np.float32),
+                              (raw.shape[2], raw.shape[1]), interpolation=cv2.INTER_LINEAR)
+        return tau_all[k]
+
     if own is not None:
         for k in range(n):
             out[k] = camera_apparent(raw[k], own, tau_all[k] if tau_all is not None else 1.0,
@@ -251,11 +260,8 @@ def apparent_temperature_frames(
                     cache[id(ev)] = ev.gain_offset(table, min_contrast_counts)
                 frame_parts.append((cache[id(ev)], w))
             parts.append(frame_parts)
-        taus = [1.0 if tau_all is None else
-                cv2.resize(np.asarray(tau_all[k], dtype=np.float32),
-                           (raw.shape[2], raw.shape[1]), interpolation=cv2.INTER_LINEAR)
-                if coarse else tau_all[k] for k in block]
-        kernels.kernel("apparent_frames")(raw[k0:block.stop], parts, taus,
+        kernels.kernel("apparent_frames")(raw[k0:block.stop], parts,
+                                          [frame_tau(k) for k in block],
                                           air.t_air_k[k0:block.stop],
                                           b_air_all[k0:block.stop], table,
                                           out[k0:block.stop])
