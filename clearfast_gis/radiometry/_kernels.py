@@ -133,8 +133,10 @@ def apparent_frames(raw: np.ndarray, parts: list, tau: list, t_air_k: np.ndarray
                 slot[id(cal)] = len(images)
                 images.append(cal)
         first[k] = slot[id(frame_parts[0][0])]
-        second[k] = slot[id(frame_parts[-1][0])]
-        w1[k] = float(frame_parts[1][1]) if len(frame_parts) > 1 else 0.0
+        if len(frame_parts) > 1:
+            second[k], w1[k] = slot[id(frame_parts[1][0])], float(frame_parts[1][1])
+        else:
+            second[k] = first[k]
     trans = np.empty(raw.shape, dtype=np.float32)
     for k, t in enumerate(tau):
         trans[k] = np.asarray(t, dtype=np.float32)
