@@ -1,7 +1,8 @@
 """The detector's fast kernels (``--kernels fast``, :mod:`clearfast_gis.kernels`).
 
-- Grey-scale and binary morphological reconstruction by Vincent's hybrid algorithm (numba),
-  behind :mod:`clearfast_gis.detection.reconstruction` (the module notes there give the
+- Grey-scale morphological reconstruction by Vincent's hybrid algorithm and binary
+  reconstruction by a fill from the seeds (numba), behind
+  :mod:`clearfast_gis.detection.reconstruction` (the module notes there give the
   conventions: 8-connectivity, NaN = no-data walls, identical to scikit-image);
 - the registry's ``top_hat_by_reconstruction``, ``bottom_hat_by_reconstruction`` and
   ``binary_opening_by_reconstruction``: OpenCV disk erosion/dilation and these

@@ -2,10 +2,11 @@
 
 Reconstruction by dilation of a *seed* under a *mask* (``seed <= mask``) is the limit of
 geodesic dilations of the seed inside the mask with the 3x3 element B (8-connectivity).
-Vincent's hybrid algorithm does one raster scan, one anti-raster scan that also queues the
-pixels that can still propagate, and then a FIFO-queue propagation; it gives exactly the values
-of :func:`skimage.morphology.reconstruction` (only min and max are used, so no rounding) and is
-several times faster on thermal images.
+Vincent's hybrid algorithm does raster and anti-raster scans, the last of which also queues
+the pixels that can still propagate, and then a FIFO-queue propagation; it gives exactly the
+values of :func:`skimage.morphology.reconstruction` (only min and max are used, so no
+rounding) and is several times faster on thermal images. A binary reconstruction is the
+8-connected components of the mask that hold a seed: a fill from the seeds.
 
 No-data: NaN pixels of a floating-point mask (or seed) are not part of the image. They neither
 receive nor pass on values, so they behave like walls, and they are NaN in the result. This is
