@@ -12,6 +12,9 @@ import sys
 
 
 def main() -> int:
+    from clearfast_gis.allocator import keep_freed_memory
+
+    keep_freed_memory()
     fn, items = pickle.load(sys.stdin.buffer)
     result = fn(items)
     sys.stdout.buffer.write(pickle.dumps(result, protocol=pickle.HIGHEST_PROTOCOL))

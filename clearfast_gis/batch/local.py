@@ -15,6 +15,7 @@ import threading
 from collections.abc import Callable, Sequence
 from concurrent.futures import ProcessPoolExecutor, as_completed
 
+from clearfast_gis.allocator import keep_freed_memory
 from clearfast_gis.batch.jobs import SurveyJob, SurveyResult, convert_survey
 from clearfast_gis.parallel import n_threads
 
@@ -24,6 +25,7 @@ _EVENTS = None
 def _init_worker(events, threads: int = 0) -> None:
     global _EVENTS
     _EVENTS = events
+    keep_freed_memory()  # the worker is a process that runs the chain
     if threads:  # share the cores between the worker processes (clearfast_gis.parallel)
         os.environ.setdefault("CLEARFAST_THREADS", str(threads))
 

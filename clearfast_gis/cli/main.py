@@ -14,6 +14,7 @@ import os
 import click
 
 from clearfast_gis import __version__
+from clearfast_gis.allocator import keep_freed_memory
 from clearfast_gis.errors import ClearfastError
 
 #: subcommand name -> (module, one-line help)
@@ -97,9 +98,11 @@ def cli(argv: list[str] | None = None) -> None:
     """Run the command line; never show a traceback for anticipated errors (the group maps
     them, :class:`LazyGroup`).
 
-    Set ``CLEARFAST_DEBUG=1`` to see the traceback of an unexpected error (and GDAL's own
+    The C heap keeps freed memory for reuse (:mod:`clearfast_gis.allocator`). Set
+    ``CLEARFAST_DEBUG=1`` to see the traceback of an unexpected error (and GDAL's own
     log messages, which are otherwise kept off the terminal).
     """
+    keep_freed_memory()
     if not os.environ.get("CLEARFAST_DEBUG"):
         import logging
 
