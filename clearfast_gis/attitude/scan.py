@@ -14,7 +14,7 @@ from clearfast_gis.attitude.fit import fit_attitude
 from clearfast_gis.attitude.ties import GroundTie, LinearTie, displacement_jacobian
 from clearfast_gis.geometry.grid import GroundGrid
 from clearfast_gis.geometry.pose import CameraPose
-from clearfast_gis.geometry.projection import frame_footprint
+from clearfast_gis.geometry.projection import frame_footprints
 from clearfast_gis.mosaic import FrameInput, build_scan_mosaic, project_frame
 from clearfast_gis.mosaic.coregister import coregister_projected
 from clearfast_gis.mosaic.markers import locate_marker
@@ -190,8 +190,9 @@ def scan_attitude(frames: list[FrameInput], times_s: np.ndarray, camera, grid: G
     def jac_at(i: int, x: float, y: float) -> np.ndarray:
         return displacement_jacobian(camera, placed[i].pose, x, y)
 
+    footprints = None
     if len(marker_xy):
-        footprints = [frame_footprint(camera, f.pose) for f in placed]
+        footprints = frame_footprints(camera, [f.pose for f in placed])
         for x, y in marker_xy:
             tie = _marker_tie(placed, footprints, camera, grid, n_bands, float(x), float(y),
                               search_m)
@@ -207,7 +208,8 @@ def scan_attitude(frames: list[FrameInput], times_s: np.ndarray, camera, grid: G
 
         def measure(i: int):
             """Frame ``i`` projected, and its displacement against each reference."""
-            pf = project_frame(placed[i].values, camera, placed[i].pose, grid)
+            pf = project_frame(placed[i].values, camera, placed[i].pose, grid,
+                               footprint=None if footprints is None else footprints[i])
             if pf is None:
                 return None
             rs, cs = pf.window.slices

@@ -40,6 +40,7 @@ from clearfast_gis.geometry.pose import (
 from clearfast_gis.geometry.projection import (
     NOT_SEEN,
     frame_footprint,
+    frame_footprints,
     ground_maps,
     incidence_angle_map,
     off_axis_angle_map,
@@ -51,7 +52,7 @@ __all__ = [
     "MissionPlan", "PinholeCamera", "PlatformTrack", "angles_from_direction",
     "attitude_matrix", "build_plan", "camera_from_manifest", "crs_to_lonlat",
     "default_platform_xy", "direction_from_angles", "distort_normalized", "format_summary",
-    "frame_footprint", "ground_maps", "incidence_angle_map", "intersect_ground",
+    "frame_footprint", "frame_footprints", "ground_maps", "incidence_angle_map", "intersect_ground",
     "lonlat_to_crs", "off_axis_angle_map", "plan_mission", "platform_track", "pose_from_ptu",
     "slant_range_map", "undistort_normalized", "utm_epsg_for",
 ]

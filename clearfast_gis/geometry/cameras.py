@@ -34,24 +34,33 @@ def _pixels(u: np.ndarray, v: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
 
 
 def intersect_ground(origin_m: np.ndarray, directions: np.ndarray, z: float = 0.0) -> np.ndarray:
-    """Points where rays from ``origin_m`` (3,) along ``directions`` (N, 3) meet the plane z.
+    """Points where rays from ``origin_m`` along ``directions`` meet the plane z.
 
-    Returns (N, 3) metres, NaN where the ray is parallel to the plane or meets it behind the
-    origin (or the origin is not above the plane).
+    ``origin_m`` (3,) with ``directions`` (N, 3), or one origin per frame, (F, 3) with
+    ``directions`` (F, N, 3). Returns the shape of ``directions``, metres, NaN where the ray
+    is parallel to the plane or meets it behind the origin (or the origin is not above the
+    plane).
     """
     d = np.asarray(directions, dtype=float)
-    dz = d[:, 2]
-    height = origin_m[2] - z
+    origin = np.asarray(origin_m, dtype=float)[..., None, :]
+    dz = d[..., 2]
+    height = origin[..., 2] - z
     with np.errstate(divide="ignore", invalid="ignore"):
         t = -height / dz
     ok = (dz < 0.0) & (height > 0.0) & np.isfinite(t)
-    out = origin_m[None, :] + np.where(ok, t, np.nan)[:, None] * d
-    out[:, 2] = np.where(ok, z, np.nan)
+    out = origin + np.where(ok, t, np.nan)[..., None] * d
+    out[..., 2] = np.where(ok, z, np.nan)
     return out
 
 
+def _attitudes(poses: Sequence[CameraPose]) -> np.ndarray:
+    """The poses' ``R_world_from_base``, (F, 3, 3)."""
+    return np.stack([p.attitude() for p in poses])
+
+
 class _Camera:
-    """Shared behaviour of the camera models (each model defines ``project`` and ``rays``)."""
+    """Shared behaviour of the camera models (each model defines ``project`` and
+    ``rays_of_poses``)."""
 
     width: int
     height: int
@@ -67,7 +76,19 @@ class _Camera:
 
         NaN where the pixel's ray does not meet the plane ahead of the camera.
         """
-        return intersect_ground(pose.position_m, self.rays(u, v, pose), z)
+        return self.ground_points_of_poses(u, v, [pose], z)[0]
+
+    def ground_points_of_poses(self, u: np.ndarray, v: np.ndarray,
+                               poses: Sequence[CameraPose], z: float = 0.0) -> np.ndarray:
+        """Ground points (F, N, 3) metres seen by pixels (u, v) (N,) from each of F poses,
+        in one vectorised computation: ``[i]`` is ``ground_points(u, v, poses[i], z)``, bit
+        for bit. NaN where the pixel's ray does not meet the plane ahead of the camera."""
+        origins = np.stack([p.position_m for p in poses])
+        return intersect_ground(origins, self.rays_of_poses(u, v, poses), z)
+
+    def rays(self, u: np.ndarray, v: np.ndarray, pose: CameraPose) -> np.ndarray:
+        """Unit world directions (N, 3) of pixels (u, v)."""
+        return self.rays_of_poses(u, v, [pose])[0]
 
     def in_frame(self, uv: np.ndarray) -> np.ndarray:
         """True where pixel coordinates (N, 2) lie within the pixel-centre hull
@@ -159,12 +180,14 @@ class EquiangularCamera(_Camera):
         uv[at_centre] = np.nan
         return uv
 
-    def rays(self, u: np.ndarray, v: np.ndarray, pose: CameraPose) -> np.ndarray:
-        """Unit world directions (N, 3) of pixels (u, v)."""
+    def rays_of_poses(self, u: np.ndarray, v: np.ndarray, poses: Sequence[CameraPose]
+                      ) -> np.ndarray:
+        """Unit world directions (F, N, 3) of pixels (u, v) (N,) from each of F poses."""
         d_az, d_el = self.angle_offsets(u, v)
-        d_base = direction_from_angles(np.radians(pose.azimuth_deg) + d_az,
-                                       np.radians(pose.elevation_deg) + d_el)
-        return d_base @ pose.attitude().T
+        az = np.radians([p.azimuth_deg for p in poses])[:, None]
+        el = np.radians([p.elevation_deg for p in poses])[:, None]
+        d_base = direction_from_angles(az + d_az, el + d_el)
+        return d_base @ _attitudes(poses).transpose(0, 2, 1)
 
 
 def distort_normalized(x: np.ndarray, y: np.ndarray,
@@ -283,14 +306,17 @@ class PinholeCamera(_Camera):
         uv[~(pc[:, 2] > 0.0)] = np.nan
         return uv
 
-    def rays(self, u: np.ndarray, v: np.ndarray, pose: CameraPose) -> np.ndarray:
-        """Unit world directions (N, 3) of pixels (u, v) (exact undistortion)."""
+    def rays_of_poses(self, u: np.ndarray, v: np.ndarray, poses: Sequence[CameraPose]
+                      ) -> np.ndarray:
+        """Unit world directions (F, N, 3) of pixels (u, v) (N,) from each of F poses (exact
+        undistortion)."""
         u_arr, v_arr = _pixels(u, v)
         x, y = undistort_normalized((u_arr - self.cx) / self.fx, (v_arr - self.cy) / self.fy,
                                     self.distortion)
         d_cam = np.column_stack([x, y, np.ones_like(x)])
         d_cam /= np.linalg.norm(d_cam, axis=1, keepdims=True)
-        return d_cam @ pose.rotation().T
+        rotations = np.stack([p.rotation() for p in poses])
+        return d_cam @ rotations.transpose(0, 2, 1)
 
 
 Camera = EquiangularCamera | PinholeCamera

@@ -16,6 +16,7 @@ positive yaw turns the base clockwise seen from above (like an azimuth).
 
 from __future__ import annotations
 
+import functools
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 
@@ -52,6 +53,16 @@ def attitude_matrix(roll_deg: float, pitch_deg: float, yaw_deg: float) -> np.nda
     ndarray, shape (3, 3)
         ``R_world_from_base``.
     """
+    angles = (float(roll_deg), float(pitch_deg), float(yaw_deg))
+    return _attitude_matrix(tuple(a.hex() for a in angles), *angles).copy()
+
+
+@functools.lru_cache(maxsize=4096)
+def _attitude_matrix(key: tuple[str, ...], roll_deg: float, pitch_deg: float,
+                     yaw_deg: float) -> np.ndarray:
+    """:func:`attitude_matrix`, remembered: a scan's frames share one attitude, and every ray,
+    footprint and re-posing asks for it again. ``key`` is the angles' exact bits (``-0.0``
+    is not ``0.0`` here)."""
     return (_rz(-np.radians(yaw_deg)) @ _ry(np.radians(pitch_deg))
             @ _rx(np.radians(roll_deg)))
 

@@ -10,6 +10,8 @@ the cameras' ``project`` (:mod:`clearfast_gis.geometry._reference`) to float32 r
 
 from __future__ import annotations
 
+from collections.abc import Sequence
+
 import numpy as np
 import shapely
 from shapely.geometry import Polygon
@@ -94,29 +96,56 @@ def frame_footprint(camera: Camera, pose: CameraPose, z: float = 0.0,
     shows the horizon gets a bounded outline. Returns an empty polygon when the frame sees no
     ground.
     """
-    height = pose.position_m[2] - z
-    if height <= 0.0:
-        return Polygon()
+    return frame_footprints(camera, [pose], z, samples_per_edge, max_range_m)[0]
+
+
+def frame_footprints(camera: Camera, poses: Sequence[CameraPose], z: float = 0.0,
+                     samples_per_edge: int = 32, max_range_m: float | None = None
+                     ) -> list[Polygon]:
+    """:func:`frame_footprint` of many frames, the outlines' rays in one vectorised
+    computation (the same polygons, bit for bit, as one frame at a time)."""
+    if not len(poses):
+        return []
+    heights = np.array([p.position_m[2] for p in poses]) - z
+    out: list[Polygon] = [Polygon()] * len(poses)
+    above = np.flatnonzero(heights > 0.0)
+    if above.size == 0:
+        return out
+    placed = [poses[i] for i in above]
+    height = heights[above][:, None]
     limit = 50.0 * height if max_range_m is None else float(max_range_m)
     edge = camera.edge_pixels(samples_per_edge)
-    d = camera.rays(edge[:, 0], edge[:, 1], pose)
-    horiz = np.hypot(d[:, 0], d[:, 1])
+    d = camera.rays_of_poses(edge[:, 0], edge[:, 1], placed)  # (F, N, 3)
+    horiz = np.hypot(d[..., 0], d[..., 1])
     with np.errstate(divide="ignore", invalid="ignore"):
-        reach = np.where(d[:, 2] < 0.0, height * horiz / -d[:, 2], np.inf)
-        scale = np.where(reach <= limit, height / -d[:, 2], limit / horiz)
-    if not np.any(d[:, 2] < 0.0):
-        return Polygon()
-    pts = pose.position_m[None, :2] + scale[:, None] * d[:, :2]
-    pts = pts[np.all(np.isfinite(pts), axis=1)]
-    if len(pts) < 3:
-        return Polygon()
-    poly = Polygon(pts)
-    if not poly.is_valid:
-        # an outline cut at the range limit can cross itself: keep its polygonal parts, or the
-        # convex hull of the outline points when nothing polygonal survives the repair
-        parts = [g for g in shapely.get_parts(shapely.make_valid(poly))
-                 if g.geom_type in ("Polygon", "MultiPolygon") and not g.is_empty]
-        poly = shapely.unary_union(parts) if parts else shapely.MultiPoint(pts).convex_hull
-        if poly.is_empty or poly.geom_type not in ("Polygon", "MultiPolygon"):
-            poly = shapely.MultiPoint(pts).convex_hull
+        reach = np.where(d[..., 2] < 0.0, height * horiz / -d[..., 2], np.inf)
+        scale = np.where(reach <= limit, height / -d[..., 2], limit / horiz)
+    origins = np.stack([p.position_m[:2] for p in placed])[:, None, :]
+    pts = origins + scale[..., None] * d[..., :2]  # (F, N, 2)
+    sees = np.any(d[..., 2] < 0.0, axis=1)
+    finite = np.all(np.isfinite(pts), axis=2)
+    whole = sees & np.all(finite, axis=1)
+    polys = np.empty(len(placed), dtype=object)
+    if whole.any():
+        polys[whole] = shapely.polygons(pts[whole])
+    for k in np.flatnonzero(sees & ~whole):
+        kept = pts[k][finite[k]]
+        polys[k] = Polygon(kept) if len(kept) >= 3 else Polygon()
+    for k, i in enumerate(above):
+        if sees[k]:
+            out[i] = _valid_outline(polys[k], pts[k][finite[k]])
+    return out
+
+
+def _valid_outline(poly: Polygon, pts: np.ndarray) -> Polygon:
+    """``poly`` itself when valid; an outline cut at the range limit can cross itself: then
+    its polygonal parts, or the convex hull of the outline points ``pts`` (M, 2) when nothing
+    polygonal survives the repair."""
+    if poly.is_empty or poly.is_valid:
+        return poly
+    parts = [g for g in shapely.get_parts(shapely.make_valid(poly))
+             if g.geom_type in ("Polygon", "MultiPolygon") and not g.is_empty]
+    poly = shapely.unary_union(parts) if parts else shapely.MultiPoint(pts).convex_hull
+    if poly.is_empty or poly.geom_type not in ("Polygon", "MultiPolygon"):
+        poly = shapely.MultiPoint(pts).convex_hull
     return poly

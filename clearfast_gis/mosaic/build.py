@@ -11,7 +11,7 @@ from clearfast_gis.geometry.grid import GroundGrid
 from clearfast_gis.geometry.pose import CameraPose
 from clearfast_gis.mosaic.coregister import FrameCorrection, coregister_projected
 from clearfast_gis.mosaic.insert import MosaicCanvas
-from clearfast_gis.mosaic.project import project_frame
+from clearfast_gis.mosaic.project import frame_geometry, project_frame
 from clearfast_gis.mosaic.seams import fit_linear_histogram_mapping
 from clearfast_gis.parallel import thread_imap
 from clearfast_gis.progress import NULL_PROGRESS, Progress
@@ -100,7 +100,11 @@ def build_scan_mosaic(frames: Iterable[FrameInput], camera, grid: GroundGrid, n_
     corrections: dict[int, FrameCorrection] = {}
     seam_gains: dict[int, tuple[float, float]] = {}
     frames = list(frames)
-    projections = thread_imap(lambda f: project_frame(f.values, camera, f.pose, grid), frames)
+    footprints, sigmas = frame_geometry(camera, [f.pose for f in frames], grid.pixel_size)
+    projections = thread_imap(
+        lambda k: project_frame(frames[k].values, camera, frames[k].pose, grid,
+                                footprint=footprints[k], sigma_px=sigmas[k]),
+        range(len(frames)))
     for frame, projected in zip(frames, projections, strict=True):
         progress.advance()
         if projected is None:

@@ -76,16 +76,26 @@ def path_length_map(camera, pose: CameraPose, lattice: int = 17) -> np.ndarray:
     interpolates the transmittance bilinearly from it. Pixels that see the sky get the
     largest range of the frame.
     """
+    return path_length_maps(camera, [pose], lattice)[0]
+
+
+def path_length_maps(camera, poses: Sequence[CameraPose], lattice: int = 17) -> np.ndarray:
+    """:func:`path_length_map` of many frames, float32 (F, n, n), the lattice's rays in one
+    vectorised computation (the same values, bit for bit, as one frame at a time)."""
     w, h = camera.width, camera.height
     lattice = max(2, min(lattice, w, h))
     us = np.linspace(0, w - 1, lattice)
     vs = np.linspace(0, h - 1, lattice)
     uu, vv = np.meshgrid(us, vs)
-    g = camera.ground_points(uu.ravel(), vv.ravel(), pose)
-    d = np.linalg.norm(g - pose.position_m[None, :], axis=1)
+    g = camera.ground_points_of_poses(uu.ravel(), vv.ravel(), poses)  # (F, n * n, 3)
+    origins = np.stack([p.position_m for p in poses])
+    d = np.linalg.norm(g - origins[:, None, :], axis=2)
     d = np.where(np.isfinite(d), d, np.nan)
-    fill = np.nanmax(d) if np.isfinite(d).any() else 20.0
-    return np.where(np.isfinite(d), d, fill).reshape(lattice, lattice).astype(np.float32)
+    seen = np.isfinite(d)
+    with np.errstate(invalid="ignore"):  # a frame that sees no ground: 20 m
+        fill = np.where(seen.any(axis=1), np.nanmax(np.where(seen, d, -np.inf), axis=1), 20.0)
+    out = np.where(seen, d, fill[:, None])
+    return out.reshape(len(poses), lattice, lattice).astype(np.float32)
 
 
 def scan_frames(ctx: SurveyContext, scan: int, air_at, atmosphere: bool = True,
@@ -138,7 +148,7 @@ def scan_frames(ctx: SurveyContext, scan: int, air_at, atmosphere: bool = True,
         idx = slice(start, min(start + chunk, keep.size))
         block_pos = keep[idx]
         block_poses = poses[idx]
-        paths = np.stack([path_length_map(ctx.camera, p) for p in block_poses])
+        paths = path_length_maps(ctx.camera, block_poses)
         stack = empty((block_pos.size, n_bands, ctx.camera.height, ctx.camera.width),
                       np.float32)  # (P, B, H, W)
         for b in range(n_bands):

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -11,7 +12,12 @@ from shapely.geometry import Polygon
 from clearfast_gis import kernels
 from clearfast_gis.geometry.grid import GroundGrid
 from clearfast_gis.geometry.pose import CameraPose
-from clearfast_gis.geometry.projection import frame_footprint, ground_maps, incidence_angle_map
+from clearfast_gis.geometry.projection import (
+    frame_footprint,
+    frame_footprints,
+    ground_maps,
+    incidence_angle_map,
+)
 
 
 @dataclass(frozen=True)
@@ -90,13 +96,24 @@ def antialias_sigma_px(camera, pose: CameraPose, cell_m: float) -> float:
     otherwise half the ratio of the cell to the ground pixel, so resampling onto coarser
     cells averages instead of aliasing (the mosaic keeps the mean temperature of a cell).
     """
-    g = camera.ground_points(np.array([(camera.width - 1) / 2.0]),
-                             np.array([(camera.height - 1) / 2.0]), pose)[0]
-    if not np.all(np.isfinite(g)):
-        return 0.0
-    ground_px = float(np.linalg.norm(g - pose.position_m)) * pixel_angle_rad(camera)
-    ratio = cell_m / ground_px
-    return 0.5 * ratio if ratio > 1.2 else 0.0
+    return antialias_sigmas_px(camera, [pose], cell_m)[0]
+
+
+def antialias_sigmas_px(camera, poses: Sequence[CameraPose], cell_m: float) -> list[float]:
+    """:func:`antialias_sigma_px` of many frames (their centre rays in one computation)."""
+    if not len(poses):
+        return []
+    centres = camera.ground_points_of_poses(np.array([(camera.width - 1) / 2.0]),
+                                            np.array([(camera.height - 1) / 2.0]), poses)
+    out = []
+    for g, pose in zip(centres[:, 0], poses, strict=True):
+        if not np.all(np.isfinite(g)):
+            out.append(0.0)
+            continue
+        ground_px = float(np.linalg.norm(g - pose.position_m)) * pixel_angle_rad(camera)
+        ratio = cell_m / ground_px
+        out.append(0.5 * ratio if ratio > 1.2 else 0.0)
+    return out
 
 
 def resample(band: np.ndarray, map_x: np.ndarray, map_y: np.ndarray, sigma_px: float
@@ -122,7 +139,8 @@ def resample(band: np.ndarray, map_x: np.ndarray, map_y: np.ndarray, sigma_px: f
 
 
 def project_frame(frame: np.ndarray, camera, pose: CameraPose, grid: GroundGrid,
-                  max_incidence_deg: float = 85.0, antialias: bool = True
+                  max_incidence_deg: float = 85.0, antialias: bool = True,
+                  footprint: Polygon | None = None, sigma_px: float | None = None,
                   ) -> ProjectedFrame | None:
     """Resample a frame onto the part of ``grid`` it sees.
 
@@ -139,6 +157,11 @@ def project_frame(frame: np.ndarray, camera, pose: CameraPose, grid: GroundGrid,
         Cells seen at a more grazing angle are left out.
     antialias : bool
         Low-pass the frame to the cell size first (:func:`antialias_sigma_px`).
+    footprint : Polygon, optional
+        The frame's :func:`~clearfast_gis.geometry.projection.frame_footprint`, when it is
+        already known (:func:`frame_geometry` computes a scan's frames at once).
+    sigma_px : float, optional
+        Its :func:`antialias_sigma_px`, likewise (used when ``antialias``).
 
     Returns
     -------
@@ -146,7 +169,9 @@ def project_frame(frame: np.ndarray, camera, pose: CameraPose, grid: GroundGrid,
         None when the frame sees no cell of the grid.
     """
     stack = frame[None] if frame.ndim == 2 else frame
-    window = footprint_window(frame_footprint(camera, pose), grid)
+    if footprint is None:
+        footprint = frame_footprint(camera, pose)
+    window = footprint_window(footprint, grid)
     if window is None:
         return None
     sub = subgrid(grid, window)
@@ -155,7 +180,10 @@ def project_frame(frame: np.ndarray, camera, pose: CameraPose, grid: GroundGrid,
     if not seen.any():
         return None
     values = np.empty((stack.shape[0], *sub.shape), dtype=np.float32)
-    sigma = antialias_sigma_px(camera, pose, grid.pixel_size) if antialias else 0.0
+    if not antialias:
+        sigma = 0.0
+    else:
+        sigma = antialias_sigma_px(camera, pose, grid.pixel_size) if sigma_px is None else sigma_px
     for b in range(stack.shape[0]):
         values[b] = resample(np.ascontiguousarray(stack[b], dtype=np.float32), map_x, map_y,
                              sigma)
@@ -165,3 +193,12 @@ def project_frame(frame: np.ndarray, camera, pose: CameraPose, grid: GroundGrid,
     values *= unseen  # NaN where not kept (faster than boolean-mask assignment)
     incidence = (incidence * unseen).astype(np.float32, copy=False)
     return ProjectedFrame(values, incidence, window)
+
+
+def frame_geometry(camera, poses: Sequence[CameraPose], cell_m: float
+                   ) -> tuple[list[Polygon], list[float]]:
+    """The footprints and anti-alias sigmas (frame pixels) of many frames, for
+    :func:`project_frame`: their rays computed together, a few milliseconds for a scan
+    instead of a quarter of a millisecond a frame (the same values, bit for bit)."""
+    poses = list(poses)
+    return frame_footprints(camera, poses), antialias_sigmas_px(camera, poses, cell_m)

@@ -4,8 +4,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from clearfast_gis.geometry.projection import frame_footprint
-from clearfast_gis.mosaic.frames import SurveyContext, frame_pose, scan_times
+from clearfast_gis.geometry.projection import frame_footprints
+from clearfast_gis.mosaic.frames import SurveyContext, frame_poses, scan_times
 from clearfast_gis.mosaic.grid import mosaic_grid
 
 MIN_DEFAULT_PIXEL_M = 0.02
@@ -47,9 +47,8 @@ def mosaic_grid_for(ctx: SurveyContext, epsg: int, pixel_size_m: float, referenc
     survey = ctx.survey
     fr = survey.frames
     rows = survey.scan_rows(reference, 0)
-    fps = [frame_footprint(ctx.camera, frame_pose(ctx, fr.time_s[i], fr.pan_deg[i],
-                                                  fr.tilt_deg[i]), max_range_m=60.0)
-           for i in rows]
+    fps = frame_footprints(ctx.camera, frame_poses(ctx, fr.time_s[rows], fr.pan_deg[rows],
+                                                   fr.tilt_deg[rows]), max_range_m=60.0)
     area = survey.mission.get("area")
     clip = None
     if area and len(area) == 4:

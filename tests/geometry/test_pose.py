@@ -74,3 +74,22 @@ def test_pose_from_ptu_bad_platform(platform, field):
 def test_pose_from_ptu_elevation_out_of_range():
     with pytest.raises(InvalidInput, match="tilt_deg"):
         pose_from_ptu([0, 0, 10], 0, -95, {"tilt_zero_deg": 0})
+
+
+def test_attitude_matrix_remembered_exactly():
+    """The remembered matrices are those computed afresh, bit for bit (signed zeros too), and
+    each call gets its own copy."""
+    from clearfast_gis.geometry.pose import _rx, _ry, _rz, attitude_matrix
+
+    rng = np.random.default_rng(3)
+    angles = [tuple(a) for a in rng.normal(0.0, 3.0, (50, 3))]
+    angles += [(0.0, -0.0, 0.0), (-0.0, 0.0, -0.0), (0.0, 0.0, 0.0)]
+    for _ in range(2):  # the second pass is answered from memory
+        for r, p, y in angles:
+            fresh = _rz(-np.radians(y)) @ _ry(np.radians(p)) @ _rx(np.radians(r))
+            got = attitude_matrix(r, p, y)
+            assert np.array_equal(got, fresh)
+            assert np.array_equal(np.signbit(got), np.signbit(fresh))
+    a = attitude_matrix(1.0, 2.0, 3.0)
+    a[0, 0] = 99.0
+    assert attitude_matrix(1.0, 2.0, 3.0)[0, 0] != 99.0
