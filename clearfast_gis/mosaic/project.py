@@ -180,9 +180,8 @@ def project_frame(frame: np.ndarray, camera, pose: CameraPose, grid: GroundGrid,
     if not seen.any():
         return None
     values = np.empty((stack.shape[0], *sub.shape), dtype=np.float32)
-    if not antialias:
-        sigma = 0.0
-    else:
+    sigma = 0.0
+    if antialias:
         sigma = antialias_sigma_px(camera, pose, grid.pixel_size) if sigma_px is None else sigma_px
     for b in range(stack.shape[0]):
         values[b] = resample(np.ascontiguousarray(stack[b], dtype=np.float32), map_x, map_y,
