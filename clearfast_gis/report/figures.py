@@ -87,6 +87,11 @@ def mosaic_panel_png(mosaics: Sequence[np.ndarray], times_s: Sequence[float],
     return _png(fig)
 
 
+LEGEND_HEADROOM = 0.22
+"""Headroom added above a contrast curve's data for its legend, a fraction of the data's
+vertical range (the one-row legend takes about 8 % of the axes' height)."""
+
+
 class ContrastCurves:
     """Renders anomalies' contrast curves on one reused figure (the axes, labels and fonts
     are laid out once; each curve only updates the data and the title: about three times
@@ -120,10 +125,16 @@ class ContrastCurves:
         legend = ax.get_legend()
         if legend is not None:
             legend.remove()
-        ax.legend(handles=[self.measured, self.model] if has_model else [self.measured],
-                  fontsize=7)
         ax.relim(visible_only=True)
+        ax.set_autoscaley_on(True)  # the last curve's headroom fixed the limits
         ax.autoscale_view()
+        # the legend sits in a band of headroom above the data: where matplotlib's "best"
+        # corner was used, measured points and the model line that filled the axes were
+        # hidden under it
+        lo, hi = ax.get_ylim()
+        ax.set_ylim(lo, hi + LEGEND_HEADROOM * (hi - lo))
+        ax.legend(handles=[self.measured, self.model] if has_model else [self.measured],
+                  fontsize=7, loc="upper right", ncol=2, borderaxespad=0.3)
         buf = io.BytesIO()
         self.fig.savefig(buf, format="png", dpi=110)
         return buf.getvalue()

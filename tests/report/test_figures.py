@@ -6,6 +6,7 @@ from __future__ import annotations
 import io
 
 import numpy as np
+import pytest
 from PIL import Image
 
 from clearfast_gis.parallel import ProcessChunks
@@ -34,3 +35,25 @@ def test_each_curve_is_the_same_bytes_alone_in_a_batch_and_in_worker_processes()
     img = Image.open(io.BytesIO(batch[0]))
     assert img.format == "PNG" and img.size == (572, 330)
     assert len(set(batch)) == len(batch)  # each curve drew its own data and title
+
+
+@pytest.mark.parametrize("shape", ["sine", "ramp", "flat", "spiky", "fills"])
+def test_contrast_curve_legend_covers_no_measured_point(shape):
+    """The legend sits in headroom above the data, whatever the curve fills (matplotlib's
+    "best" corner hid points of a curve that filled the axes)."""
+    from clearfast_gis.report.figures import ContrastCurves
+
+    t = 1.7e9 + np.arange(0.0, 86400.0, 1800.0)
+    x = (t - t[0]) / 86400.0
+    c = {"sine": 2.5 * np.sin(2 * np.pi * x), "ramp": np.linspace(-1.0, 3.0, t.size),
+         "flat": np.full(t.size, 0.4), "spiky": np.where(np.arange(t.size) % 2, 3.0, -3.0),
+         "fills": 2.5 * np.sin(2 * np.pi * 7.3 * x)}[shape]  # no free corner in the axes
+    plotter = ContrastCurves()
+    plotter.png(t, c, t, c, "a title")
+    ax = plotter.ax
+    box = ax.get_legend().get_window_extent()
+    pts = ax.transData.transform(np.column_stack([(t - t[0]) / 3600.0, c]))
+    inside = ((pts[:, 0] >= box.x0 - 3.5) & (pts[:, 0] <= box.x1 + 3.5)
+              & (pts[:, 1] >= box.y0 - 3.5) & (pts[:, 1] <= box.y1 + 3.5))  # marker radius
+    assert not inside.any()
+    assert ax.get_ylim()[1] > c.max()  # the data's top is still on the axes
