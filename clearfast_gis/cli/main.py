@@ -98,11 +98,9 @@ def cli(argv: list[str] | None = None) -> None:
     """Run the command line; never show a traceback for anticipated errors (the group maps
     them, :class:`LazyGroup`).
 
-    The C heap keeps freed memory for reuse (:mod:`clearfast_gis.allocator`). Set
-    ``CLEARFAST_DEBUG=1`` to see the traceback of an unexpected error (and GDAL's own
+    Set ``CLEARFAST_DEBUG=1`` to see the traceback of an unexpected error (and GDAL's own
     log messages, which are otherwise kept off the terminal).
     """
-    keep_freed_memory()
     if not os.environ.get("CLEARFAST_DEBUG"):
         import logging
 
@@ -112,5 +110,13 @@ def cli(argv: list[str] | None = None) -> None:
     group.main(args=argv, prog_name="clearfast")
 
 
-if __name__ == "__main__":
+def main() -> None:
+    """The ``clearfast`` program: :func:`cli` in a process of its own, whose C heap keeps
+    freed memory for reuse (:mod:`clearfast_gis.allocator`; a process that calls
+    :func:`cli` keeps its allocator as it is)."""
+    keep_freed_memory()
     cli()
+
+
+if __name__ == "__main__":
+    main()

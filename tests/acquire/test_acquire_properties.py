@@ -33,7 +33,8 @@ def test_temperature_lines_round_trip(t, temps, tag):
     rec = parse_thermocouple_line(f"{tag},{format_utc(t, 'seconds')},{vals}\r\n", len(temps),
                                   tag)
     assert rec[0] == t
-    np.testing.assert_allclose(rec[1], np.round(temps, 3), atol=1e-9, equal_nan=True)
+    written = [float(f"{v:.3f}") for v in temps]  # the decimals on the line (0.0025 -> 0.003)
+    np.testing.assert_allclose(rec[1], written, atol=1e-9, equal_nan=True)
     other = "B" if tag == "T" else "T"
     assert parse_thermocouple_line(f"{tag},{format_utc(t)},{vals}", len(temps), other) is None
 
