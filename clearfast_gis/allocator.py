@@ -14,9 +14,11 @@ that freed arrays stay in the heap and are reused without faults. The peak memor
 what the heap keeps (at most :data:`TRIM_THRESHOLD_BYTES` of free memory at its top).
 Measured in BENCHMARKS.md ("The C heap keeps freed memory").
 
-It is called by the programs that run the chain (the ``clearfast`` command, the batch
-workers, :mod:`clearfast_gis.worker`), not by the library's functions: a process that embeds
-the toolkit keeps its own allocator settings. Settings given in the environment
+It is called by the programs that run the chain (the ``clearfast`` program and ``python -m
+clearfast_gis.cli.main``, through :func:`clearfast_gis.cli.main.main`; the local batch
+workers; :mod:`clearfast_gis.worker`), not by the library's functions nor by
+:func:`clearfast_gis.cli.main.cli` called from Python: a process that embeds the toolkit
+keeps its own allocator settings. Settings given in the environment
 (``MALLOC_*_`` variables or ``GLIBC_TUNABLES``) are left as they are.
 """
 
