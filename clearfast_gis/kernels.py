@@ -112,6 +112,11 @@ REGISTRY: dict[str, KernelPair] = {
         "clearfast_gis.detection._reference:order_statistics",
         "radix selection on the values' bits (numba), no copy",
         "`np.partition`"),
+    "box_mean": KernelPair(
+        "clearfast_gis.detection._kernels:box_mean",
+        "clearfast_gis.detection._reference:box_mean",
+        "running sums along each axis (numba), scipy's arithmetic",
+        "scipy `uniform_filter` (mode nearest)"),
     "register_conformal": KernelPair(
         "clearfast_gis.registration._kernels:register_conformal",
         "clearfast_gis.registration._reference:register_conformal",

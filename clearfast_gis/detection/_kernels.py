@@ -20,6 +20,7 @@ from __future__ import annotations
 import numba
 import numpy as np
 
+from clearfast_gis.detection._boxmean import box_mean_nearest
 from clearfast_gis.detection._radix import radix_order_statistics
 from clearfast_gis.detection.morphology import dilate_disk, erode_disk
 
@@ -307,3 +308,10 @@ def order_statistics(values: np.ndarray, ranks) -> np.ndarray:
     selection over the values' bits (:mod:`clearfast_gis.detection._radix`), no copy of the
     values."""
     return radix_order_statistics(values, ranks)
+
+
+def box_mean(image: np.ndarray, size: int) -> np.ndarray:
+    """:func:`clearfast_gis.detection.clutter.box_mean` on the fast kernels: running sums
+    along each axis (numba, :mod:`clearfast_gis.detection._boxmean`), scipy's arithmetic
+    operation for operation."""
+    return box_mean_nearest(image, size)

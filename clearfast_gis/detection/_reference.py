@@ -70,3 +70,11 @@ def order_statistics(values: np.ndarray, ranks) -> np.ndarray:
     v = np.asarray(values).ravel()
     r = np.asarray(ranks, dtype=np.int64).ravel()
     return np.partition(v, r)[r]
+
+
+def box_mean(image: np.ndarray, size: int) -> np.ndarray:
+    """:func:`clearfast_gis.detection._kernels.box_mean` with scipy's ``uniform_filter``."""
+    from scipy import ndimage
+
+    return ndimage.uniform_filter(np.asarray(image, dtype=np.float64), size=int(size),
+                                  mode="nearest")

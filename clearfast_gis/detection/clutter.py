@@ -5,8 +5,8 @@ from __future__ import annotations
 import warnings
 
 import numpy as np
-from scipy import ndimage
 
+from clearfast_gis import kernels
 from clearfast_gis.detection.selection import median
 from clearfast_gis.detection.stack import as_scan_stack, map_scans
 
@@ -17,6 +17,25 @@ CLUTTER_SCALE_M = 0.3
 #: The detector's default cut in clutter sigmas (``ProcessOptions.threshold_snr``): the
 #: stretch's cut of each filtered image is capped at this many times the image's clutter.
 THRESHOLD_SNR = 4.0
+
+
+def box_mean(image: np.ndarray, size: int) -> np.ndarray:
+    """Mean over a ``size`` x ``size`` window centred on each cell, the image's edge values
+    extended beyond it (scipy's ``uniform_filter`` with ``mode="nearest"``).
+
+    Parameters
+    ----------
+    image : ndarray, shape (H, W)
+        Finite values (any unit).
+    size : int
+        Window side, cells.
+
+    Returns
+    -------
+    ndarray of float64, shape (H, W)
+        In the unit of ``image``. The fast kernel (numba) gives scipy's values bit for bit.
+    """
+    return kernels.kernel("box_mean")(image, size)
 
 
 def image_clutter_k(image: np.ndarray, pixel_size_m: float, keep: np.ndarray | None = None,
@@ -49,7 +68,7 @@ def image_clutter_k(image: np.ndarray, pixel_size_m: float, keep: np.ndarray | N
     img = np.asarray(image, dtype=np.float64)
     # exact medians by selection (np.median's values, without its copies)
     filled = np.where(finite, img, median(img[finite]))
-    v = (filled - ndimage.uniform_filter(filled, size=size, mode="nearest"))[ok]
+    v = (filled - box_mean(filled, size))[ok]
     np.abs(np.subtract(v, median(v), out=v), out=v)
     return float(1.4826 * median(v))
 

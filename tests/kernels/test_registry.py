@@ -47,6 +47,12 @@ def _order_statistics():
     return (values, ranks), np.testing.assert_array_equal  # the same values, bit for bit
 
 
+def _box_mean():
+    rng = np.random.default_rng(12)
+    image = rng.normal(20.0, 3.0, (97, 131))
+    return (image, 15), np.testing.assert_array_equal  # scipy's values, bit for bit
+
+
 def _registration():
     import math
 
@@ -156,6 +162,7 @@ EXAMPLES = {
     "bottom_hat_by_reconstruction": _hat,
     "binary_opening_by_reconstruction": _opening,
     "order_statistics": _order_statistics,
+    "box_mean": _box_mean,
     "register_conformal": _registration,
     "ground_maps": _maps,
     "resample": _resample,
