@@ -20,36 +20,39 @@ ROWS_PER_BLOCK = 8
 """Rows whose running sums along the row advance together (independent additions)."""
 
 
+@numba.njit(cache=True, nogil=True, inline="always")
+def _halves(size):  # pragma: no cover - compiled
+    """Cells of a ``size`` window before and after its centre (scipy's, origin 0)."""
+    before = size // 2
+    return before, size - before - 1
+
+
 @numba.njit(cache=True, nogil=True)
 def _down_columns(a, size, out):  # pragma: no cover - compiled
     """Running means of ``a`` (H, W) down each column into ``out``, edges extended."""
     h, w = a.shape
-    s1 = size // 2
-    s2 = size - s1 - 1
-    div = float(size)
+    s1, s2 = _halves(size)
     acc = np.zeros(w)
     for k in range(-s1, s2 + 1):
         row = a[min(max(k, 0), h - 1)]
         for c in range(w):
             acc[c] += row[c]
     for c in range(w):
-        out[0, c] = acc[c] / div
+        out[0, c] = acc[c] / size
     for i in range(1, h):
         come = a[min(i + s2, h - 1)]
         go = a[max(i - s1 - 1, 0)]
         dst = out[i]
         for c in range(w):
             acc[c] += come[c] - go[c]
-            dst[c] = acc[c] / div
+            dst[c] = acc[c] / size
 
 
 @numba.njit(cache=True, nogil=True)
 def _along_rows(a, size, out):  # pragma: no cover - compiled
     """Running means of ``a`` (H, W) along each row into ``out``, edges extended."""
     h, w = a.shape
-    s1 = size // 2
-    s2 = size - s1 - 1
-    div = float(size)
+    s1, s2 = _halves(size)
     acc = np.zeros(ROWS_PER_BLOCK)
     for r0 in range(0, h, ROWS_PER_BLOCK):
         nb = min(ROWS_PER_BLOCK, h - r0)
@@ -58,13 +61,13 @@ def _along_rows(a, size, out):  # pragma: no cover - compiled
             for q in range(-s1, s2 + 1):
                 s += a[r0 + k, min(max(q, 0), w - 1)]
             acc[k] = s
-            out[r0 + k, 0] = s / div
+            out[r0 + k, 0] = s / size
         for j in range(1, w):
             come = min(j + s2, w - 1)
             go = max(j - s1 - 1, 0)
             for k in range(nb):
                 acc[k] += a[r0 + k, come] - a[r0 + k, go]
-                out[r0 + k, j] = acc[k] / div
+                out[r0 + k, j] = acc[k] / size
 
 
 def box_mean_nearest(image: np.ndarray, size: int) -> np.ndarray:
