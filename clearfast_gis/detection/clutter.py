@@ -74,7 +74,8 @@ def image_clutter_k(image: np.ndarray, pixel_size_m: float, keep: np.ndarray | N
 
 
 def background_levels(stack, labels: np.ndarray, pixel_size_m: float,
-                      scale_m: float = CLUTTER_SCALE_M) -> tuple[np.ndarray, float]:
+                      scale_m: float = CLUTTER_SCALE_M, clutter: bool = True
+                      ) -> tuple[np.ndarray, float]:
     """The mine-free background of every scan, in one pass over the stack (band 0 of each
     scan, read scan by scan: :mod:`clearfast_gis.detection.stack`).
 
@@ -86,6 +87,8 @@ def background_levels(stack, labels: np.ndarray, pixel_size_m: float,
         Anomaly labels (0 = background).
     pixel_size_m : float
         Cell size, m.
+    clutter : bool
+        Also measure the clutter (30 ms a trial scan); without it the second value is NaN.
 
     Returns
     -------
@@ -100,7 +103,8 @@ def background_levels(stack, labels: np.ndarray, pixel_size_m: float,
 
     def one_scan(_scan: int, bands: np.ndarray) -> tuple[float, float]:
         return (np.nanmedian(bands[0][background]),
-                image_clutter_k(bands[0], pixel_size_m, background, scale_m))
+                image_clutter_k(bands[0], pixel_size_m, background, scale_m) if clutter
+                else float("nan"))
 
     # a scan without background cells: NaN (the process's filter, so on the threads too)
     with warnings.catch_warnings():

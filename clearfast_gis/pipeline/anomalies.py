@@ -84,7 +84,7 @@ def detect(c: RunContext) -> Detection:
     deep_templates = None  # the deep search runs the thermal model: not without it
     if o.invert:
         background, _ = background_levels(stack, np.zeros(stack.shape, dtype=np.int32),
-                                          read.grid.pixel_size)
+                                          read.grid.pixel_size, clutter=False)
         forcing, soil, _, _, canopy = _site(c, times, background)
         deep_templates = reference_curves(forcing, soil, times, DEEP_DEPTHS_M, canopy)
     else:

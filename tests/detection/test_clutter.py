@@ -69,3 +69,15 @@ def test_image_clutter_is_the_mad_of_the_high_pass_to_the_last_bit():
         expected = float(1.4826 * np.median(np.abs(v - np.median(v))))
         assert image_clutter_k(img, 0.02, k) == expected
         assert 0.01 < expected < 1.0
+
+
+def test_background_levels_without_the_clutter():
+    from clearfast_gis.detection.clutter import background_levels
+
+    rng = np.random.default_rng(8)
+    stack = rng.normal(20.0, 0.5, (3, 1, 60, 70)).astype(np.float32)
+    labels = np.zeros((60, 70), dtype=np.int32)
+    labels[10:20, 10:20] = 1
+    levels, clutter = background_levels(stack, labels, 0.02)
+    only, none = background_levels(stack, labels, 0.02, clutter=False)
+    assert np.array_equal(levels, only) and np.isfinite(clutter) and np.isnan(none)
