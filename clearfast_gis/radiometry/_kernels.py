@@ -62,8 +62,8 @@ def _uniform_hermite(x, x0, dx, y, dy, out):
 
 
 @numba.njit(cache=True, nogil=True, error_model="numpy")
-def _fused(raw, gains, offsets, first, second, w1, tau, b_air, r0, inv_dr, t_nodes,
-           out):  # pragma: no cover - compiled
+def _fused(raw, gain_a, offset_a, gain_b, offset_b, first, second, w1, tau, b_air, r0, inv_dr,
+           t_nodes, out):  # pragma: no cover - compiled
     p, h, w = raw.shape
     n = t_nodes.size - 1
     s_row = np.empty(w, dtype=np.float64)  # table coordinate of each pixel of a row
@@ -73,8 +73,11 @@ def _fused(raw, gains, offsets, first, second, w1, tau, b_air, r0, inv_dr, t_nod
         for k in range(p):
             wk1 = w1[k]
             w0 = 1.0 - wk1
-            gain0, offset0 = gains[first[k], i], offsets[first[k], i]
-            gain1, offset1 = gains[second[k], i], offsets[second[k], i]
+            # each frame's two calibrations are images a or b (slots 0 and 1)
+            gain0 = gain_a[i] if first[k] == 0 else gain_b[i]
+            offset0 = offset_a[i] if first[k] == 0 else offset_b[i]
+            gain1 = gain_a[i] if second[k] == 0 else gain_b[i]
+            offset1 = offset_a[i] if second[k] == 0 else offset_b[i]
             counts, trans, b_k = raw[k, i], tau[k, i], b_air[k]
             # the arithmetic of a row first (no branch, so the loop vectorises), then the table
             for j in range(w):
@@ -121,26 +124,44 @@ def apparent_frames(raw: np.ndarray, parts: list, tau: list, t_air_k: np.ndarray
     :class:`~clearfast_gis.radiometry.table.BandTable`; ``out`` float32 (P, H, W), written
     with the apparent temperature, kelvin (NaN at uncalibrated pixels and outside the table).
     """
-    n = raw.shape[0]
-    slot: dict[int, int] = {}
-    images = []
-    first = np.empty(n, dtype=np.int64)
-    second = np.empty(n, dtype=np.int64)
-    w1 = np.zeros(n, dtype=np.float64)
-    for k, frame_parts in enumerate(parts):
-        for cal, _w in frame_parts:
-            if id(cal) not in slot:
-                slot[id(cal)] = len(images)
-                images.append(cal)
-        first[k] = slot[id(frame_parts[0][0])]
-        if len(frame_parts) > 1:
-            second[k], w1[k] = slot[id(frame_parts[1][0])], float(frame_parts[1][1])
-        else:
-            second[k] = first[k]
+    raw = np.ascontiguousarray(raw)
     trans = np.empty(raw.shape, dtype=np.float32)
     for k, t in enumerate(tau):
         trans[k] = np.asarray(t, dtype=np.float32)
-    _fused(np.ascontiguousarray(raw), np.stack([c.gain for c in images]),
-           np.stack([c.offset for c in images]), first, second, w1, trans,
-           np.asarray(b_air, dtype=np.float64), table.inverse_radiance0,
-           1.0 / table.inverse_step, table.inverse_t_k, out)
+    b_air = np.asarray(b_air, dtype=np.float64)
+    for a, b, images, first, second, w1 in _runs(parts):
+        _fused(raw[a:b], images[0].gain, images[0].offset, images[-1].gain, images[-1].offset,
+               first, second, w1, trans[a:b], b_air[a:b], table.inverse_radiance0,
+               1.0 / table.inverse_step, table.inverse_t_k, out[a:b])
+
+
+def _runs(parts: list) -> list[tuple]:
+    """The frames in runs that use at most two calibration images: ``(start, stop, images,
+    first, second, w1)`` with each frame's slots (0 or 1) in ``images`` and the weight of
+    its second calibration. The kernel reads the images as they are (no stacked copy of a
+    scan's calibration per block); a block crosses a third event only when a calibration
+    falls inside it."""
+    def distinct(cals: list, known: list) -> list:
+        out: list = []
+        for c in cals:
+            if not any(c is i for i in known + out):
+                out.append(c)
+        return out
+
+    runs = []
+    start, images = 0, []
+    for k, frame_parts in enumerate(parts + [None]):
+        cals = [] if frame_parts is None else [c for c, _w in frame_parts]
+        new = distinct(cals, images)
+        if frame_parts is not None and len(images) + len(new) <= 2:
+            images += new
+            continue
+        if k > start:
+            span = parts[start:k]
+            slot = {id(c): i for i, c in enumerate(images)}
+            first = np.array([slot[id(fp[0][0])] for fp in span], dtype=np.int64)
+            second = np.array([slot[id(fp[-1][0])] for fp in span], dtype=np.int64)
+            w1 = np.array([float(fp[1][1]) if len(fp) > 1 else 0.0 for fp in span])
+            runs.append((start, k, images, first, second, w1))
+        start, images = k, distinct(cals, [])
+    return runs
