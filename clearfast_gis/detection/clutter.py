@@ -66,9 +66,12 @@ def image_clutter_k(image: np.ndarray, pixel_size_m: float, keep: np.ndarray | N
         return float("nan")
     size = max(3, int(round(scale_m / pixel_size_m)) | 1)
     img = np.asarray(image, dtype=np.float64)
-    # exact medians by selection (np.median's values, without its copies)
-    filled = np.where(finite, img, median(img[finite]))
-    v = (filled - box_mean(filled, size))[ok]
+    # exact medians by selection (np.median's values, without its copies); a float32 image's
+    # first one selected among its float32 values
+    values = image if np.asarray(image).dtype == np.float32 else img
+    filled = np.where(finite, img, median(values[finite], np.float64))
+    local = box_mean(filled, size)
+    v = np.subtract(filled, local, out=local)[ok]
     np.abs(np.subtract(v, median(v), out=v), out=v)
     return float(1.4826 * median(v))
 

@@ -34,11 +34,14 @@ def order_statistics(values: np.ndarray, ranks: Sequence[int]) -> np.ndarray:
     return kernels.kernel("order_statistics")(values, ranks)
 
 
-def median(values: np.ndarray) -> np.floating:
-    """``np.median(values)`` of finite float32 or float64 values (any shape, at least one):
-    the middle value, or for an even count the mean of the two middle ones, computed as
-    ``np.median`` computes it (``np.mean`` of the two, in the values' dtype). ``values`` is
-    not modified."""
+def median(values: np.ndarray, dtype: type | None = None) -> np.floating:
+    """``np.median(values.astype(dtype))`` of finite float32 or float64 values (any shape, at
+    least one): the middle value, or for an even count the mean of the two middle ones,
+    computed as ``np.median`` computes it (``np.mean`` of the two, in ``dtype``, default the
+    values' own). The order statistics are found in the values' dtype (float32 values are
+    selected as float32, half the bytes of their float64 copy: the same ones, as the
+    conversion keeps the order). ``values`` is not modified."""
     n = np.asarray(values).size
     ranks = [(n - 1) // 2] if n % 2 else [n // 2 - 1, n // 2]
-    return np.mean(order_statistics(values, ranks))
+    middle = order_statistics(values, ranks)
+    return np.mean(middle if dtype is None else middle.astype(dtype))

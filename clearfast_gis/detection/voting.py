@@ -201,9 +201,10 @@ def detect_on_mosaics(stack_c: np.ndarray, times_s: np.ndarray, transform, pixel
     feats = sorted((f for f in feats if f.id not in deep),
                    key=lambda f: (-f.score, f.id))[:max_anomalies] \
         + [f for f in feats if f.id in deep]
-    labels = np.zeros(split.shape, dtype=np.int32)
+    # one look-up table for the renumbering (not one pass over the image per blob)
+    renumber = np.zeros(int(split.max(initial=0)) + 1, dtype=np.int32)
     renumbered = []
     for new_id, f in enumerate(feats, start=1):
-        labels[split == f.id] = new_id
+        renumber[f.id] = new_id
         renumbered.append(dataclasses.replace(f, id=new_id))
-    return labels, renumbered
+    return renumber[split], renumbered

@@ -22,7 +22,7 @@ import numpy as np
 from clearfast_gis.atomic import atomic_path
 from clearfast_gis.attitude import ReferenceMosaic, reposed, reposed_in_time, scan_attitude
 from clearfast_gis.attitude.placement import nearest_attitude, placement_attitude
-from clearfast_gis.export.cog import read_mosaic, write_cog
+from clearfast_gis.export.cog import keep_decoded, read_mosaic, write_cog
 from clearfast_gis.export.layout import mosaic_rel, source_rel
 from clearfast_gis.mosaic.buffers import BufferLease, BufferPool
 from clearfast_gis.mosaic.build import FrameCorrection, build_scan_mosaic
@@ -207,6 +207,7 @@ class ScanJob:
                             "CLEARFAST_SCAN": scan,
                             "CLEARFAST_SEAM_BALANCE": self.options.seam_balance},
                       scan_time_s=t_mean)
+            keep_decoded(self.products, rel, values)  # the stages after read it, undecoded
             with atomic_path(source_path(self.products, scan)) as tmp, \
                     open(tmp, "wb") as fh:
                 np.save(fh, source)

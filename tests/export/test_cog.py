@@ -11,7 +11,12 @@ from hypothesis import strategies as st
 
 from clearfast_gis.errors import InvalidInput
 from clearfast_gis.export import band_description, mosaic_name, read_mosaic, write_cog
-from clearfast_gis.export.cog import default_overview_factors, mosaic_stack, remove_decoded
+from clearfast_gis.export.cog import (
+    default_overview_factors,
+    keep_decoded,
+    mosaic_stack,
+    remove_decoded,
+)
 from clearfast_gis.export.layout import DECODED_REL, mosaic_rel
 from clearfast_gis.timeutil import parse_utc
 
@@ -72,6 +77,25 @@ def test_mosaic_stack_decoded_once(tmp_path):
     remove_decoded(tmp_path)
     assert not scratch.exists()
     remove_decoded(tmp_path)  # nothing to delete: no error
+
+
+def test_decoded_copy_kept_at_the_write_is_the_cogs_bytes(tmp_path):
+    """The copy a writer keeps with ``keep_decoded`` (the scan job, after each COG) holds the
+    bytes that decoding the COG gives, NaN payloads and signed zeros included, and a
+    ``decode_once`` stack reads it instead of decoding the COG."""
+    rng = np.random.default_rng(8)
+    bands = rng.normal(12.0, 4.0, size=(3, 70, 90)).astype(np.float32)
+    bands[0, :9, :11] = np.nan
+    bands[1, 5, 5:9] = [0.0, -0.0, np.inf, -np.inf]
+    bands[2, 60:, 80:] = np.float32(np.nan) * -1  # a NaN with the sign bit
+    rel = mosaic_rel(4)
+    write_cog(tmp_path / rel, bands, TRANSFORM, 32636, ["a", "b", "c"])
+    keep_decoded(tmp_path, rel, bands)
+    kept = (tmp_path / DECODED_REL / "scan_004.f32").read_bytes()
+    assert kept == read_mosaic(tmp_path / rel).bands_c.tobytes() == bands.tobytes()
+    stack = mosaic_stack(tmp_path, [4], decode_once=True)
+    (tmp_path / rel).rename(tmp_path / "elsewhere.tif")  # the header was read: no decoding
+    assert stack.scan(0).tobytes() == bands.tobytes()
 
 
 def test_mosaic_stack_decoded_once_without_room(tmp_path, monkeypatch):
