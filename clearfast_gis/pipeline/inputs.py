@@ -66,6 +66,7 @@ def open_context(survey_path: str | Path, progress: Progress = NULL_PROGRESS,
     for w in report.warnings:
         progress.message(f"warning: {w.line()}")
     survey = read_survey(survey_path)
+    survey.use_tables(report.logs.frames, report.logs.blackbody_frames)
     gnss = report.logs.gnss
     epsg = survey_epsg(survey, gnss)
     track = smooth_static_track(platform_track(

@@ -114,6 +114,15 @@ class Survey:
 
         return survey_station_profile(self.root, self.manifest)
 
+    def use_tables(self, frames: FramesTable | None = None,
+                   blackbody_frames: BlackbodyFramesTable | None = None) -> None:
+        """Take the frame tables as :func:`~clearfast_gis.survey.validate.validate_survey`
+        parsed them (its ``report.logs``) instead of parsing the files again; None leaves a
+        table to be read when first asked for."""
+        for name, table in (("frames", frames), ("blackbody_frames", blackbody_frames)):
+            if table is not None:
+                self.__dict__[name] = table
+
     def use_station_profile(self, profile) -> None:
         """Read the weather and soil logs with ``profile`` (a profile given on the command
         line) instead of the one ``survey.json`` names."""

@@ -52,9 +52,9 @@ class Problem:
 
 @dataclass(frozen=True)
 class ParsedLogs:
-    """The survey's logs as validation parsed them, for the chain to use (each is parsed
-    once per run). None where a log is absent or could not be parsed (then the report holds
-    a problem).
+    """The survey's logs and frame tables as validation parsed them, for the chain to use
+    (each is parsed once per run). None where a file is absent or could not be parsed (then
+    the report holds a problem).
 
     Attributes
     ----------
@@ -62,12 +62,16 @@ class ParsedLogs:
     weather : WeatherLog or None
     soil : SoilLog or None
     markers : Markers or None
+    frames : FramesTable or None
+    blackbody_frames : BlackbodyFramesTable or None
     """
 
     gnss: object = None
     weather: object = None
     soil: object = None
     markers: object = None
+    frames: object = None
+    blackbody_frames: object = None
 
 
 @dataclass
@@ -254,7 +258,7 @@ def validate_survey(path: str | os.PathLike, gnss_gap_s: float = 10.0,
     frames = None
     if "frames" in files and (ft := ck.text(files["frames"], "frames")) is not None:
         with ck.guard(files["frames"]):
-            frames = parse_frames_table(ft, files["frames"])
+            frames = parsed["frames"] = parse_frames_table(ft, files["frames"])
     if frames is not None:
         _check_frames(ck, frames, files["frames"], mission, files.get("mission", ""), bands,
                       shape_hw)
@@ -273,7 +277,7 @@ def validate_survey(path: str | os.PathLike, gnss_gap_s: float = 10.0,
             (bt := ck.text(files["blackbody_frames"], "blackbody_frames")) is not None:
         label = files["blackbody_frames"]
         with ck.guard(label):
-            bbt = parse_blackbody_frames_table(bt, label)
+            bbt = parsed["blackbody_frames"] = parse_blackbody_frames_table(bt, label)
             _check_tiffs(ck, bbt.file, bbt.page, label, shape_hw)
             if len(bbt) == 0:
                 ck.problem(label, "", "no blackbody frames")

@@ -91,3 +91,35 @@ def test_from_a_later_stage_redoes_it_and_never_keeps_the_old_products(demo_surv
     assert (products / "anomalies.gpkg").exists()
     assert manifest["timings_s"]["characterisation"] > 0.05
     assert not (products / DECODED_REL).exists()  # and deleted when the run ends
+
+
+def test_the_context_reads_each_table_once(demo_survey, monkeypatch):
+    """The chain's context takes the logs and the frame tables validation parsed: the frames
+    table and the blackbody frames table are parsed once per run, and the survey's tables
+    are validation's own objects, equal to a fresh read of the files."""
+    import numpy as np
+
+    from clearfast_gis.pipeline.inputs import open_context
+    from clearfast_gis.survey import model, read_survey, tables
+
+    calls = {"frames": 0, "blackbody_frames": 0}
+    for name, parse in (("frames", tables.parse_frames_table),
+                        ("blackbody_frames", tables.parse_blackbody_frames_table)):
+        def counted(*args, _parse=parse, _name=name, **kwargs):
+            calls[_name] += 1
+            return _parse(*args, **kwargs)
+        monkeypatch.setattr(tables, f"parse_{name}_table", counted)
+    from clearfast_gis.survey import validate
+    monkeypatch.setattr(validate, "parse_frames_table", tables.parse_frames_table)
+    monkeypatch.setattr(validate, "parse_blackbody_frames_table",
+                        tables.parse_blackbody_frames_table)
+    ctx, _, report = open_context(demo_survey)
+    assert ctx.survey.frames is report.logs.frames
+    assert ctx.survey.blackbody_frames is report.logs.blackbody_frames
+    assert calls == {"frames": 1, "blackbody_frames": 1}
+    fresh = read_survey(demo_survey)
+    assert isinstance(fresh, model.Survey)
+    for name in ("frames", "blackbody_frames"):
+        a, b = getattr(ctx.survey, name), getattr(fresh, name)
+        for field in dataclasses.fields(a):
+            np.testing.assert_array_equal(getattr(a, field.name), getattr(b, field.name))
