@@ -296,13 +296,16 @@ def keep_decoded(products: Path, cog_rel: str, bands: np.ndarray) -> None:
     read by a ``decode_once`` stack does not decode the tiles' DEFLATE again (55-67 CPU ms a
     trial scan). The values are the COG's bit for bit (DEFLATE is lossless and the COG stores
     the float32 values as they are). Call it after every write of the COG: a copy is only
-    valid as long as its COG is not rewritten."""
+    valid as long as its COG is not rewritten, so the scan's earlier copy is deleted first
+    (a new one that cannot be written leaves none, and the COG is decoded at its next read)."""
     decoded = Path(products) / DECODED_REL
+    raw = _decoded_file(decoded, Path(cog_rel))
+    raw.unlink(missing_ok=True)
     try:
         decoded.mkdir(parents=True, exist_ok=True)
     except OSError:
         return
-    _keep_decoded(_decoded_file(decoded, Path(cog_rel)), bands)
+    _keep_decoded(raw, bands)
 
 
 def _keep_decoded(raw: Path, bands: np.ndarray) -> None:

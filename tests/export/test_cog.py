@@ -98,6 +98,37 @@ def test_decoded_copy_kept_at_the_write_is_the_cogs_bytes(tmp_path):
     assert stack.scan(0).tobytes() == bands.tobytes()
 
 
+def test_a_rewritten_cog_never_keeps_its_old_copy(tmp_path, monkeypatch):
+    """A COG written again (the attitude adjustment re-projects a scan) replaces its decoded
+    copy; when the new copy cannot be written (disk full) the old one is gone too, so the
+    stages after read the new COG, never the old values."""
+    import errno
+    import os
+
+    from clearfast_gis.export import cog
+
+    rel = mosaic_rel(2)
+    first = np.full((1, 20, 30), 5.0, dtype=np.float32)
+    second = np.full((1, 20, 30), 7.0, dtype=np.float32)
+    write_cog(tmp_path / rel, first, TRANSFORM, 32636, ["a"])
+    keep_decoded(tmp_path, rel, first)
+    write_cog(tmp_path / rel, second, TRANSFORM, 32636, ["a"])
+    keep_decoded(tmp_path, rel, second)
+    stack = mosaic_stack(tmp_path, [2], decode_once=True)
+    np.testing.assert_array_equal(stack.scan(0), second)
+
+    def full(fd, *args, **kwargs):
+        os.close(fd)
+        raise OSError(errno.ENOSPC, "No space left on device")
+
+    write_cog(tmp_path / rel, first, TRANSFORM, 32636, ["a"])
+    with monkeypatch.context() as m:
+        m.setattr(cog.os, "fdopen", full)
+        keep_decoded(tmp_path, rel, first)
+    assert list((tmp_path / DECODED_REL).iterdir()) == []
+    np.testing.assert_array_equal(stack.scan(0), first)  # decoded from the COG
+
+
 def test_mosaic_stack_decoded_once_without_room(tmp_path, monkeypatch):
     """A decoded copy that cannot be written (disk full) is not kept: the scan is decoded
     again at its next read, with the same values, and no partial file is left."""
