@@ -133,8 +133,10 @@ def floors(survey: Path, products: Path) -> dict[str, tuple[float, float, str]]:
     - raw frames read: every frame of every band copied out of its TIFF (the page cache as the
       chain's run left it);
     - one pass over every raw pixel: counts to float32 (the least a calibration does);
-    - mosaics written: one scan's COG written again, times the scans;
-    - mosaics read: every scan's COG read (on threads, as the detector reads them);
+    - mosaics written: one scan's COG written again, times the scans, and every scan's
+      decoded copy (raw float32, :func:`clearfast_gis.export.cog.keep_decoded`) written;
+    - mosaics read: every scan's decoded copy read (on threads, as the stages after the
+      mosaics read them: the chain never decodes the COGs it wrote);
     - one disk erosion and one dilation (D1) per image: the first step of the top-hat and of
       the bottom-hat, OpenCV, on threads.
 
@@ -165,15 +167,17 @@ def floors(survey: Path, products: Path) -> dict[str, tuple[float, float, str]]:
         np.multiply(raw, np.float32(0.01), out=np.empty(raw.shape, np.float32))
 
     mosaic_files = sorted((products / "mosaics").glob("scan_*.tif"))
-    raw, pixel_pass, write, read, morph = (Clock() for _ in range(5))
+    raw, pixel_pass, write, keep, read, morph = (Clock() for _ in range(6))
     raw(lambda: thread_map(read_one, pairs))
     pixel_pass(lambda: thread_map(read_and_pass, pairs))
-    mosaics = []
-    read(lambda: mosaics.extend(thread_map(read_mosaic, mosaic_files)))
+    mosaics = thread_map(read_mosaic, mosaic_files)
     first = mosaics[0]
     with tempfile.TemporaryDirectory() as tmp:
         write(lambda: write_cog(Path(tmp) / "scan.tif", first.bands_c, first.transform,
                                 first.epsg, first.band_descriptions), times=len(mosaic_files))
+        copies = [Path(tmp) / f"{k}.f32" for k in range(len(mosaics))]
+        keep(lambda: [m.bands_c.tofile(c) for m, c in zip(mosaics, copies, strict=True)])
+        read(lambda: thread_map(lambda c: np.fromfile(c, dtype=np.float32), copies))
     o = ProcessOptions()
     se = disk_footprint(disk_px(o.d1_m, abs(first.transform.a)))
 
@@ -189,13 +193,16 @@ def floors(survey: Path, products: Path) -> dict[str, tuple[float, float, str]]:
     what = f"raw frames read ({gb:.1f} GB, {gb / raw.wall:.1f} GB/s): {raw.wall:.1f} s"
     return {
         "raw_read": (raw.wall, raw.cpu, what),
-        "mosaics": (pixel_pass.wall + write.wall, pixel_pass.cpu + write.cpu,
+        "mosaics": (pixel_pass.wall + write.wall + keep.wall,
+                    pixel_pass.cpu + write.cpu + keep.cpu,
                     f"{what}; read + one pass over every pixel {pixel_pass.wall:.1f} s + "
-                    f"{n} COGs written {write.wall:.1f} s"),
-        "residuals_and_footprint": (read.wall, read.cpu, f"{n} COGs read {read.wall:.1f} s"),
+                    f"{n} COGs written {write.wall:.1f} s + their decoded copies "
+                    f"{keep.wall:.1f} s"),
+        "residuals_and_footprint": (read.wall, read.cpu,
+                                    f"{n} decoded mosaics read {read.wall:.1f} s"),
         "detection": (read.wall + morph.wall, read.cpu + morph.cpu,
-                      f"{n} COGs read {read.wall:.1f} s + D1 erosion and dilation of "
-                      f"{len(images)} images {morph.wall:.1f} s"),
+                      f"{n} decoded mosaics read {read.wall:.1f} s + D1 erosion and dilation "
+                      f"of {len(images)} images {morph.wall:.1f} s"),
     }
 
 def stage_table(runs: dict[str, dict],
