@@ -73,8 +73,8 @@ def path_length_map(camera, pose: CameraPose, lattice: int = 17) -> np.ndarray:
 
     The slant range varies smoothly over a frame, so it is computed exactly on a
     ``lattice x lattice`` grid of pixels spanning the frame corner to corner; the radiometry
-    interpolates the transmittance bilinearly from it. Pixels that see the sky get the
-    largest range of the frame.
+    interpolates the transmittance bilinearly from it. Pixels that see the sky (or meet the
+    ground beyond float32's range) get the largest range of the frame.
     """
     return path_length_maps(camera, [pose], lattice)[0]
 
@@ -90,7 +90,8 @@ def path_length_maps(camera, poses: Sequence[CameraPose], lattice: int = 17) -> 
     g = camera.ground_points_of_poses(uu.ravel(), vv.ravel(), poses)  # (F, n * n, 3)
     origins = np.stack([p.position_m for p in poses])
     d = np.linalg.norm(g - origins[:, None, :], axis=2)
-    d = np.where(np.isfinite(d), d, np.nan)
+    # a ray that meets the ground beyond float32's range (grazing the horizon) sees sky
+    d = np.where(d <= np.finfo(np.float32).max, d, np.nan)
     seen = np.isfinite(d)
     with np.errstate(invalid="ignore"):  # a frame that sees no ground: 20 m
         fill = np.where(seen.any(axis=1), np.nanmax(np.where(seen, d, -np.inf), axis=1), 20.0)
