@@ -65,3 +65,29 @@ def test_no_frames():
     camera = CAMERAS[0]
     assert frame_footprints(camera, []) == []
     assert frame_geometry(camera, [], 0.02) == ([], [])
+
+
+def test_path_lengths_beyond_float32_count_as_sky():
+    """A lattice ray that meets the ground farther than float32 can hold (grazing the
+    horizon) is treated as seeing sky: the frame's largest finite range, not inf, and no
+    overflow in the cast."""
+    import warnings
+    from types import SimpleNamespace
+
+    def ground_points_of_poses(u, v, poses):
+        far = np.where(u[None, :] == u.max(), 1e39, 10.0 + u[None, :])  # last column: far
+        pts = np.zeros((len(poses), u.size, 3))
+        pts[..., 0] = far
+        pts[..., 2] = 0.0
+        pts[:, v == v.max(), :] = np.nan  # bottom row: sky
+        return pts
+
+    camera = SimpleNamespace(width=5, height=4, ground_points_of_poses=ground_points_of_poses)
+    pose = SimpleNamespace(position_m=np.array([0.0, 0.0, 0.0]))
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        got = path_length_maps(camera, [pose], lattice=4)[0]
+    assert got.dtype == np.float32 and np.all(np.isfinite(got))
+    largest = np.float32(10.0 + 8.0 / 3.0)  # the farthest column still on the ground
+    np.testing.assert_array_equal(got[:, -1], largest)  # beyond float32: as sky
+    np.testing.assert_array_equal(got[-1], largest)  # sky
