@@ -16,7 +16,7 @@ from clearfast_gis.geometry.grid import GroundGrid
 from clearfast_gis.geometry.pose import CameraPose
 from clearfast_gis.geometry.projection import frame_footprints
 from clearfast_gis.mosaic import FrameInput, build_scan_mosaic, project_frame
-from clearfast_gis.mosaic.coregister import coregister_projected
+from clearfast_gis.mosaic.coregister import measure_correction
 from clearfast_gis.mosaic.markers import locate_marker
 from clearfast_gis.parallel import thread_map
 
@@ -213,9 +213,9 @@ def scan_attitude(frames: list[FrameInput], times_s: np.ndarray, camera, grid: G
             if pf is None:
                 return None
             rs, cs = pf.window.slices
-            return pf, [coregister_projected(pf, ref.values[:, rs, cs], grid.pixel_size,
-                                             max_shift_m=search_m, max_angle_deg=0.0,
-                                             max_samples=TIE_SAMPLES)[1]
+            return pf, [measure_correction(pf, ref.values[:, rs, cs], grid.pixel_size,
+                                           max_shift_m=search_m, max_angle_deg=0.0,
+                                           max_samples=TIE_SAMPLES)[0]
                         for ref in references]
 
         for i, measured in zip(pick, thread_map(measure, pick), strict=True):

@@ -68,6 +68,53 @@ def _mi_after(ref: np.ndarray, mov: np.ndarray, t: ConformalTransform) -> float:
     return float(mutual_information(ref, warped, mask=both, bins=24))
 
 
+def measure_correction(projected: ProjectedFrame, reference: np.ndarray, pixel_size_m: float,
+                       max_shift_m: float, max_angle_deg: float = 2.0,
+                       init: ConformalTransform | None = None,
+                       min_overlap_frac: float = 0.15, max_samples: int | None = None,
+                       ) -> tuple[FrameCorrection, ConformalTransform | None]:
+    """The correction that aligns a projected frame to reference values under its window,
+    without applying it (the attitude ties want only the displacement; see
+    :func:`coregister_projected` for the parameters).
+
+    Returns
+    -------
+    correction : FrameCorrection
+    transform : ConformalTransform or None
+        The transform to apply (maps window cells to the projected frame's cells); None when
+        the geometric pose is kept.
+    """
+    ref = _band0(reference)
+    mov = _band0(projected.values)
+    valid = projected.valid
+    overlap = valid & np.isfinite(ref)
+    if overlap.sum() < max(64, min_overlap_frac * valid.sum()):
+        return FrameCorrection(reason="no_overlap"), None
+    h, w = ref.shape
+    centre = ((w - 1) / 2.0, (h - 1) / 2.0)
+    start = None if init is None else init.with_center(centre)
+    budget = {} if max_samples is None else {"max_samples": max_samples,
+                                             "polish_samples": max_samples}
+    t = register_conformal(ref, mov, max_shift_px=max_shift_m / pixel_size_m,
+                           max_angle_deg=max_angle_deg, init=start, bins=24, **budget)
+    if not t.converged:
+        return FrameCorrection(reason="not_converged", metric=t.metric), None
+    base_t = start if start is not None else ConformalTransform.identity(centre)
+    mi_base = _mi_after(ref, mov, base_t)
+    mi_new = _mi_after(ref, mov, t)
+    if not mi_new > mi_base * (1.0 + MIN_MI_GAIN):
+        return FrameCorrection(reason="no_gain", metric=mi_new), None
+    # ground displacement of the window centre: content at fixed x comes from moving T(x)
+    moved = t.apply(np.array([centre]))[0]
+    du, dv = centre[0] - moved[0], centre[1] - moved[1]
+    dx, dy = du * pixel_size_m, -dv * pixel_size_m
+    base = (0.0, 0.0) if init is None else (-init.tx_px * pixel_size_m,
+                                            init.ty_px * pixel_size_m)
+    if math.hypot(dx - base[0], dy - base[1]) > max_shift_m * 1.0001:
+        return FrameCorrection(reason="beyond_bound", metric=t.metric), None
+    return FrameCorrection(dx, dy, -math.degrees(t.angle_rad), True, "ok", t.metric), t
+
+
 def coregister_projected(projected: ProjectedFrame, reference: np.ndarray, pixel_size_m: float,
                          max_shift_m: float, max_angle_deg: float = 2.0,
                          init: ConformalTransform | None = None,
@@ -102,38 +149,14 @@ def coregister_projected(projected: ProjectedFrame, reference: np.ndarray, pixel
     transform : ConformalTransform or None
         The transform applied (maps window cells to the projected frame's cells).
     """
-    ref = _band0(reference)
-    mov = _band0(projected.values)
-    valid = projected.valid
-    overlap = valid & np.isfinite(ref)
-    if overlap.sum() < max(64, min_overlap_frac * valid.sum()):
-        return projected, FrameCorrection(reason="no_overlap"), None
-    h, w = ref.shape
-    centre = ((w - 1) / 2.0, (h - 1) / 2.0)
-    start = None if init is None else init.with_center(centre)
-    budget = {} if max_samples is None else {"max_samples": max_samples,
-                                             "polish_samples": max_samples}
-    t = register_conformal(ref, mov, max_shift_px=max_shift_m / pixel_size_m,
-                           max_angle_deg=max_angle_deg, init=start, bins=24, **budget)
-    if not t.converged:
-        return projected, FrameCorrection(reason="not_converged", metric=t.metric), None
-    base_t = start if start is not None else ConformalTransform.identity(centre)
-    mi_base = _mi_after(ref, mov, base_t)
-    mi_new = _mi_after(ref, mov, t)
-    if not mi_new > mi_base * (1.0 + MIN_MI_GAIN):
-        return projected, FrameCorrection(reason="no_gain", metric=mi_new), None
-    # ground displacement of the window centre: content at fixed x comes from moving T(x)
-    moved = t.apply(np.array([centre]))[0]
-    du, dv = centre[0] - moved[0], centre[1] - moved[1]
-    dx, dy = du * pixel_size_m, -dv * pixel_size_m
-    base = (0.0, 0.0) if init is None else (-init.tx_px * pixel_size_m,
-                                            init.ty_px * pixel_size_m)
-    if math.hypot(dx - base[0], dy - base[1]) > max_shift_m * 1.0001:
-        return projected, FrameCorrection(reason="beyond_bound", metric=t.metric), None
+    corr, t = measure_correction(projected, reference, pixel_size_m, max_shift_m,
+                                 max_angle_deg, init, min_overlap_frac, max_samples)
+    if t is None:
+        return projected, corr, None
+    h, w = _band0(reference).shape
     values = np.stack([warp_conformal(b, t, (h, w)) for b in projected.values])
     incidence = warp_conformal(projected.incidence_deg, t, (h, w))
     values[:, ~np.isfinite(incidence)] = np.nan
     corrected = ProjectedFrame(values.astype(np.float32), incidence.astype(np.float32),
                                projected.window)
-    corr = FrameCorrection(dx, dy, -math.degrees(t.angle_rad), True, "ok", t.metric)
     return corrected, corr, t

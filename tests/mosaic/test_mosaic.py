@@ -16,6 +16,7 @@ from clearfast_gis.mosaic import (
     mosaic_grid,
     project_frame,
 )
+from clearfast_gis.mosaic.coregister import coregister_projected, measure_correction
 
 CAM = EquiangularCamera(96, 72, 18.0)
 X0, Y0 = 500_000.0, 3_890_000.0
@@ -126,3 +127,25 @@ def test_seam_mapping_recovers_linear_change(gain, offset):
     a, b = fit_linear_histogram_mapping(m, f)
     assert a == pytest.approx(gain, rel=1e-6)
     assert b == pytest.approx(offset, abs=1e-5)
+
+
+def test_measure_correction_is_the_applied_correction():
+    """The attitude ties' measurement (no warp) gives the correction, transform included,
+    that the mosaic's co-registration applies, and it undoes a known position error."""
+    true = poses()
+    grid = mosaic_grid([frame_footprint(CAM, p) for p in true], 0.03, 32636)
+    reference = build_scan_mosaic(
+        [FrameInput(i, render(p)[None], p) for i, p in enumerate(true)], CAM, grid, 1,
+        coregister=False).values
+    off = np.array([0.07, -0.05, 0.0])
+    p = true[2]
+    pf = project_frame(render(p), CAM, CameraPose(p.position_m + off, p.azimuth_deg,
+                                                 p.elevation_deg), grid)
+    rs, cs = pf.window.slices
+    corr, t = measure_correction(pf, reference[:, rs, cs], grid.pixel_size, max_shift_m=0.3)
+    warped, corr2, t2 = coregister_projected(pf, reference[:, rs, cs], grid.pixel_size,
+                                             max_shift_m=0.3)
+    assert corr.applied and corr.reason == "ok"
+    assert corr == corr2 and t == t2
+    assert np.hypot(corr.dx_m + off[0], corr.dy_m + off[1]) < 0.02
+    assert warped is not pf and warped.values.shape == pf.values.shape
